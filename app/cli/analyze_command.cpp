@@ -1,0 +1,23 @@
+#include "app/cli/arguments.hpp"
+#include "app/cli/cli.hpp"
+#include "app/cli/commands.hpp"
+#include "app/cli/load_input.hpp"
+#include "core/analysis/scene_analysis.hpp"
+
+namespace pl {
+
+int run_analyze(std::span<const std::string> args, std::ostream& out, std::ostream&) {
+  const Arguments a(args, {"--density", "--scheme"}, {"--json"});
+  if (a.positional().size() != 1) throw UsageError("analyze takes exactly one input FILE");
+  const int density = a.integer("--density", 32, 1, 4096);
+  const auto scheme = parse_scheme_option(a.value("--scheme"));
+  const std::string file = a.positional()[0];
+  const Scene scene = load_input(file);
+  TessellationCache cache;
+  const SceneSurfaces surfaces = evaluate_scene(scene, density, scheme, cache, file);
+  const SceneReport report = analyze_scene(scene, surfaces);
+  out << (a.flag("--json") ? report_to_json(report) : report_to_text(report));
+  return kExitOk;
+}
+
+}  // namespace pl

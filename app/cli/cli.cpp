@@ -1,0 +1,71 @@
+#include "app/cli/cli.hpp"
+
+#include <array>
+#include <exception>
+
+#include "app/cli/arguments.hpp"
+#include "app/cli/commands.hpp"
+#include "core/io/data_error.hpp"
+
+namespace pl {
+
+std::span<const Command> commands() {
+  static const std::array table{
+      Command{"export", "FILE -o OUT.{obj,ply,off,stl} [--density N] [--scheme gregory|gb]",
+              run_export},
+      Command{"analyze", "FILE [--density N] [--scheme gregory|gb] [--json]", run_analyze},
+  };
+  return table;
+}
+
+namespace {
+
+void print_usage(std::ostream& os) {
+  os << "usage: patchlab [FILE]\n";
+  for (const Command& c : commands()) os << "       patchlab " << c.name << " " << c.usage << "\n";
+  os << "       patchlab --help | --version\n";
+}
+
+void print_help(std::ostream& os) {
+  os << "PatchLab " PATCHLAB_VERSION
+        " - Gregory and Generalized Bézier patches over curve networks.\n\n";
+  print_usage(os);
+  os << "\nFILE is a scene (.json, see docs/scene-format.md).\n"
+        "  --density N   samples per boundary curve (default 32)\n"
+        "  --scheme S    fill network faces with gregory (3- and 4-sided faces) or gb\n"
+        "Exit status: 0 success, 1 bad input (message names file and place), 2 wrong usage.\n";
+}
+
+}  // namespace
+
+int run_cli(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
+  if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
+    print_help(out);
+    return kExitOk;
+  }
+  if (!args.empty() && args[0] == "--version") {
+    out << "patchlab " PATCHLAB_VERSION "\n";
+    return kExitOk;
+  }
+  try {
+    if (args.empty() || args[0].empty() || args[0][0] == '-' ||
+        (args.size() == 1 && args[0].find('.') != std::string::npos)) {
+      throw UsageError("the editor is not part of this build yet; use a sub-command");
+    }
+    for (const Command& c : commands())
+      if (args[0] == c.name) return c.run(args.subspan(1), out, err);
+    throw UsageError("unknown command \"" + args[0] + "\"");
+  } catch (const UsageError& e) {
+    err << "patchlab: " << e.what() << "\n";
+    print_usage(err);
+    return kExitUsage;
+  } catch (const DataError& e) {
+    err << "patchlab: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    err << "patchlab: out of memory (try a smaller --density)\n";
+    return kExitBadInput;
+  }
+}
+
+}  // namespace pl

@@ -1,0 +1,22 @@
+#include "app/cli/load_input.hpp"
+
+#include "app/cli/arguments.hpp"
+#include "core/io/data_error.hpp"
+#include "core/io/scene_io.hpp"
+
+namespace pl {
+
+Scene load_input(const std::filesystem::path& path) {
+  const std::string ext = path.extension().string();
+  if (ext == ".json") return read_scene(path);
+  throw DataError(path.string(), "", "unknown file type \"" + ext + "\" (expected .json)");
+}
+
+std::optional<FaceScheme> parse_scheme_option(const std::optional<std::string>& value) {
+  if (!value) return std::nullopt;
+  if (*value == "gregory") return FaceScheme::Gregory;
+  if (*value == "gb") return FaceScheme::GB;
+  throw UsageError("--scheme takes gregory or gb, got \"" + *value + "\"");
+}
+
+}  // namespace pl

@@ -1,0 +1,159 @@
+#include "core/analysis/scene_analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <nlohmann/json.hpp>
+
+namespace pl {
+
+namespace {
+
+bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+bool finite_sample(const SurfaceJet& j, const SurfaceGeometry& g) {
+  return finite(j.p) && finite(j.su) && finite(j.sv) && finite(j.suu) && finite(j.suv) &&
+         finite(j.svv) && finite(g.normal) && std::isfinite(g.gaussian) && std::isfinite(g.mean) &&
+         std::isfinite(g.kmin) && std::isfinite(g.kmax);
+}
+
+// The curve side s of the surface must interpolate: the network edge (independent of the patch)
+// for faces, the patch's own boundary curve for explicit patches.
+BezierCurve side_curve(const Scene& scene, const SceneSurface& s, int face_side, int patch_side) {
+  if (s.face < 0) return s.evaluator->patch().boundary_curves().at(patch_side);
+  const Network& net = *scene.network;
+  const auto& loop = net.faces[s.face].loop;
+  const int n = static_cast<int>(loop.size());
+  const int a = loop[face_side], b = loop[(face_side + 1) % n];
+  for (std::size_t e = 0; e < net.edges.size(); ++e) {
+    if (net.edges[e].v[0] == a && net.edges[e].v[1] == b) return net.edge_curve(int(e));
+    if (net.edges[e].v[0] == b && net.edges[e].v[1] == a) return net.edge_curve(int(e)).reversed();
+  }
+  return s.evaluator->patch().boundary_curves().at(patch_side);  // unreachable after validation
+}
+
+PatchReport analyze_surface(const Scene& scene, const SceneSurface& s) {
+  const PatchEvaluator& ev = *s.evaluator;
+  PatchReport r;
+  r.name = s.name;
+  r.type = ev.patch().type();
+  r.sides = ev.patch().domain().side_count();
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  r.gaussian = {inf, -inf};
+  r.mean = {inf, -inf};
+  for (std::size_t i = 0; i < ev.sample_count(); ++i) {
+    const SurfaceGeometry& g = ev.geometry()[i];
+    if (!finite_sample(ev.jets()[i], g)) {
+      ++r.nonfinite_samples;
+      continue;
+    }
+    if (g.status == GeometryStatus::Singular) ++r.singular_samples;
+    r.gaussian = {std::min(r.gaussian[0], g.gaussian), std::max(r.gaussian[1], g.gaussian)};
+    r.mean = {std::min(r.mean[0], g.mean), std::max(r.mean[1], g.mean)};
+  }
+  if (r.gaussian[0] > r.gaussian[1]) r.gaussian = r.mean = {0, 0};
+  const Tessellation& t = ev.tessellation();
+  for (int fs = 0; fs < r.sides; ++fs) {
+    const int ps = s.face < 0 ? fs : s.patch_side.at(fs);
+    const BezierCurve c = side_curve(scene, s, fs, ps);
+    const auto& idx = t.sides[ps];
+    for (std::size_t k = 0; k < idx.size(); ++k) {
+      const double d = glm::length(ev.jets()[idx[k]].p - c.point(double(k) / t.density));
+      r.max_boundary_deviation = std::max(r.max_boundary_deviation, std::isfinite(d) ? d : inf);
+    }
+  }
+  return r;
+}
+
+EdgeReport analyze_edge(const SceneSurfaces& ss, const SharedEdge& e) {
+  const SceneSurface& a = ss.surfaces[e.surface[0]];
+  const SceneSurface& b = ss.surfaces[e.surface[1]];
+  EdgeReport r;
+  r.edge = e.edge;
+  r.faces = {a.face, b.face};
+  const auto& ia = a.evaluator->tessellation().sides[e.side[0]];
+  const auto& ib = b.evaluator->tessellation().sides[e.side[1]];
+  const std::size_t n = std::min(ia.size(), ib.size());
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t sa = ia[k], sb = ib[n - 1 - k];  // b runs the edge the other way
+    const auto& ga = a.evaluator->geometry()[sa];
+    const auto& gb = b.evaluator->geometry()[sb];
+    r.max_gap = std::max(r.max_gap, glm::length(a.evaluator->jets()[sa].p - b.evaluator->jets()[sb].p));
+    r.max_normal_angle_deg = std::max(r.max_normal_angle_deg, angle_deg(ga.normal, gb.normal));
+    r.max_mean_curvature_jump = std::max(r.max_mean_curvature_jump, std::fabs(ga.mean - gb.mean));
+  }
+  return r;
+}
+
+}  // namespace
+
+double angle_deg(const Vec3& a, const Vec3& b) {
+  return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)) * 180.0 / M_PI;
+}
+
+SceneReport analyze_scene(const Scene& scene, const SceneSurfaces& ss) {
+  SceneReport r;
+  for (const SceneSurface& s : ss.surfaces) r.patches.push_back(analyze_surface(scene, s));
+  for (const SharedEdge& e : ss.shared_edges) r.edges.push_back(analyze_edge(ss, e));
+  for (const ProjectedVertex& v : ss.projected_vertices)
+    r.vertices.push_back({v.vertex, v.max_angle_deg});
+  return r;
+}
+
+std::string report_to_json(const SceneReport& r) {
+  nlohmann::json j;
+  j["patches"] = nlohmann::json::array();
+  for (const PatchReport& p : r.patches)
+    j["patches"].push_back({{"name", p.name},
+                            {"type", p.type},
+                            {"sides", p.sides},
+                            {"max_boundary_deviation", p.max_boundary_deviation},
+                            {"nonfinite_samples", p.nonfinite_samples},
+                            {"singular_samples", p.singular_samples},
+                            {"gaussian_curvature", {p.gaussian[0], p.gaussian[1]}},
+                            {"mean_curvature", {p.mean[0], p.mean[1]}}});
+  j["edges"] = nlohmann::json::array();
+  for (const EdgeReport& e : r.edges)
+    j["edges"].push_back({{"edge", e.edge},
+                          {"faces", {e.faces[0], e.faces[1]}},
+                          {"max_gap", e.max_gap},
+                          {"max_normal_angle_deg", e.max_normal_angle_deg},
+                          {"max_mean_curvature_jump", e.max_mean_curvature_jump}});
+  j["vertices"] = nlohmann::json::array();
+  for (const VertexReport& v : r.vertices)
+    j["vertices"].push_back({{"vertex", v.vertex},
+                             {"tangent_plane_deviation_deg", v.tangent_plane_deviation_deg}});
+  return j.dump(2) + "\n";
+}
+
+std::string report_to_text(const SceneReport& r) {
+  std::string out;
+  char buf[512];
+  for (const PatchReport& p : r.patches) {
+    std::snprintf(buf, sizeof buf,
+                  "patch %-12s %-14s sides %d  boundary dev %.3g  non-finite %zu  singular %zu  "
+                  "K [%.6g, %.6g]  H [%.6g, %.6g]\n",
+                  p.name.c_str(), p.type.c_str(), p.sides, p.max_boundary_deviation,
+                  p.nonfinite_samples, p.singular_samples, p.gaussian[0], p.gaussian[1], p.mean[0],
+                  p.mean[1]);
+    out += buf;
+  }
+  for (const EdgeReport& e : r.edges) {
+    std::snprintf(buf, sizeof buf,
+                  "edge  %-4d faces %d/%d  gap %.3g  normal angle %.3g deg  mean-curvature jump "
+                  "%.3g\n",
+                  e.edge, e.faces[0], e.faces[1], e.max_gap, e.max_normal_angle_deg,
+                  e.max_mean_curvature_jump);
+    out += buf;
+  }
+  for (const VertexReport& v : r.vertices) {
+    std::snprintf(buf, sizeof buf, "vertex %-4d end tangents projected, up to %.3g deg\n", v.vertex,
+                  v.tangent_plane_deviation_deg);
+    out += buf;
+  }
+  if (out.empty()) out = "empty scene\n";
+  return out;
+}
+
+}  // namespace pl

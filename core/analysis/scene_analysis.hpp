@@ -1,0 +1,47 @@
+// Surface-quality figures of the CLI spec's `analyze`: boundary interpolation, finiteness,
+// curvature ranges per patch; gap, normal angle and mean-curvature jump per shared edge.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "core/eval/scene_surfaces.hpp"
+
+namespace pl {
+
+struct PatchReport {
+  std::string name, type;
+  int sides = 0;
+  double max_boundary_deviation = 0;
+  std::size_t nonfinite_samples = 0;
+  std::size_t singular_samples = 0;  // where Su x Sv vanishes (normal from the limit)
+  std::array<double, 2> gaussian{0, 0}, mean{0, 0};
+};
+
+struct EdgeReport {
+  int edge = -1;
+  std::array<int, 2> faces{-1, -1};
+  double max_gap = 0, max_normal_angle_deg = 0, max_mean_curvature_jump = 0;
+};
+
+struct VertexReport {
+  int vertex = -1;
+  double tangent_plane_deviation_deg = 0;
+};
+
+struct SceneReport {
+  std::vector<PatchReport> patches;
+  std::vector<EdgeReport> edges;
+  std::vector<VertexReport> vertices;
+};
+
+SceneReport analyze_scene(const Scene& scene, const SceneSurfaces& surfaces);
+
+// Angle between two unit vectors in degrees, accurate for tiny angles (atan2 form).
+double angle_deg(const Vec3& a, const Vec3& b);
+
+std::string report_to_json(const SceneReport& report);
+std::string report_to_text(const SceneReport& report);
+
+}  // namespace pl

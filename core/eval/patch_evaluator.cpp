@@ -1,0 +1,132 @@
+#include "core/eval/patch_evaluator.hpp"
+
+#include <algorithm>
+#include <cassert>
+
+namespace pl {
+
+namespace {
+// A singular sample takes its normal and curvatures from a point this fraction of the way to the
+// domain's interior point: the limit from inside, to the precision a display needs.
+constexpr double kSingularNudge = 1e-6;
+
+inline void axpy(SurfaceJet& s, const Vec3& d, const Jet& w) {
+  s.p += w.f * d;
+  s.su += w.fu * d;
+  s.sv += w.fv * d;
+  s.suu += w.fuu * d;
+  s.suv += w.fuv * d;
+  s.svv += w.fvv * d;
+}
+}  // namespace
+
+PatchEvaluator::PatchEvaluator(std::shared_ptr<Patch> patch,
+                               std::shared_ptr<const Tessellation> tessellation)
+    : patch_(std::move(patch)), tessellation_(std::move(tessellation)) {
+  assert(patch_ && tessellation_);
+  jets_.resize(tessellation_->points.size());
+  geometry_.resize(jets_.size());
+  evaluate_all();
+}
+
+void PatchEvaluator::update_geometry(std::size_t i) {
+  SurfaceGeometry g = differential_geometry(jets_[i]);
+  if (g.status == GeometryStatus::Singular) {
+    const Vec2 x = tessellation_->points[i];
+    const Vec2 inside = x + kSingularNudge * (patch_->domain().interior_point() - x);
+    g = differential_geometry(patch_->evaluate(inside));
+    g.status = GeometryStatus::Singular;
+  }
+  geometry_[i] = g;
+}
+
+void PatchEvaluator::evaluate_all() {
+  const auto& xs = tessellation_->points;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(xs.size());
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    jets_[i] = patch_->evaluate(xs[i]);
+    update_geometry(i);
+  }
+  columns_.clear();  // columns depend only on the basis, but a full rebuild starts clean
+  ++revision_;
+}
+
+const PatchEvaluator::Column& PatchEvaluator::column(std::size_t k) {
+  ++use_clock_;
+  for (Column& c : columns_)
+    if (c.k == k) {
+      c.last_use = use_clock_;
+      return c;
+    }
+  Column c;
+  c.k = k;
+  c.last_use = use_clock_;
+  const auto& xs = tessellation_->points;
+  c.phi.resize(xs.size());
+  // Evaluate in parallel chunks: influence() is const and thread-safe.
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(xs.size());
+  constexpr std::ptrdiff_t chunk = 4096;
+#pragma omp parallel for schedule(dynamic)
+  for (std::ptrdiff_t b = 0; b < n; b += chunk) {
+    const std::ptrdiff_t e = std::min(n, b + chunk);
+    patch_->influence(k, std::span(xs).subspan(b, e - b), std::span(c.phi).subspan(b, e - b));
+  }
+  std::size_t nonzero = 0;
+  for (const Jet& w : c.phi) nonzero += !w.is_zero();
+  if (nonzero * 2 < c.phi.size()) {  // sparse: keep only the samples it moves
+    c.dense = false;
+    std::vector<Jet> packed;
+    packed.reserve(nonzero);
+    c.index.reserve(nonzero);
+    for (std::size_t i = 0; i < c.phi.size(); ++i)
+      if (!c.phi[i].is_zero()) {
+        c.index.push_back(static_cast<uint32_t>(i));
+        packed.push_back(c.phi[i]);
+      }
+    c.phi = std::move(packed);
+  }
+  if (columns_.size() >= kMaxColumns) {
+    auto oldest = std::min_element(columns_.begin(), columns_.end(),
+                                   [](const Column& a, const Column& b) { return a.last_use < b.last_use; });
+    *oldest = std::move(c);
+    return *oldest;
+  }
+  columns_.push_back(std::move(c));
+  return columns_.back();
+}
+
+void PatchEvaluator::prepare_influence(std::size_t k) { column(k); }
+
+std::size_t PatchEvaluator::move_control_point(std::size_t k, const Vec3& p) {
+  assert(k < patch_->size());
+  const Vec3 d = p - patch_->control_point(k);
+  patch_->set_control_point(k, p);
+  const Column& c = column(k);
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(c.phi.size());
+  if (c.dense) {
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t i = 0; i < n; ++i) {
+      if (c.phi[i].is_zero()) continue;
+      axpy(jets_[i], d, c.phi[i]);
+      update_geometry(i);
+    }
+  } else {
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t i = 0; i < n; ++i) {
+      const uint32_t s = c.index[i];
+      axpy(jets_[s], d, c.phi[i]);
+      update_geometry(s);
+    }
+  }
+  ++revision_;
+  return static_cast<std::size_t>(n);
+}
+
+std::size_t PatchEvaluator::influence_bytes() const {
+  std::size_t b = 0;
+  for (const Column& c : columns_) b += c.phi.capacity() * sizeof(Jet) + c.index.capacity() * 4;
+  return b;
+}
+
+}  // namespace pl

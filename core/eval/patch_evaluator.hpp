@@ -1,0 +1,66 @@
+// Owns the samples of one patch: a (shared) tessellation, every sample's surface jet and its
+// differential geometry. Moving a control point is an axpy with that point's influence column
+// (architecture note 3): only samples where phi_k is non-zero change, and only their normals
+// and curvatures are recomputed.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "core/domain/tessellation.hpp"
+#include "core/geometry/differential_geometry.hpp"
+#include "core/patch/patch.hpp"
+
+namespace pl {
+
+class PatchEvaluator {
+ public:
+  // Evaluates every sample at once.
+  PatchEvaluator(std::shared_ptr<Patch> patch, std::shared_ptr<const Tessellation> tessellation);
+
+  const Patch& patch() const { return *patch_; }
+  const Tessellation& tessellation() const { return *tessellation_; }
+  std::size_t sample_count() const { return jets_.size(); }
+  const std::vector<SurfaceJet>& jets() const { return jets_; }
+  const std::vector<SurfaceGeometry>& geometry() const { return geometry_; }
+  // Increases whenever samples change, so the renderer knows what to re-upload.
+  uint64_t revision() const { return revision_; }
+
+  // Recomputes everything from the patch (the from-scratch path).
+  void evaluate_all();
+
+  // Builds (or refreshes the recency of) control point k's influence column: the one-off cost at
+  // drag start. Called implicitly by move_control_point.
+  void prepare_influence(std::size_t k);
+
+  // Moves control point k to p, updating only the samples it influences. Returns their count.
+  std::size_t move_control_point(std::size_t k, const Vec3& p);
+
+  // Memory held by cached influence columns, in bytes.
+  std::size_t influence_bytes() const;
+
+  // How many influence columns are kept (most recently used first out when full).
+  static constexpr std::size_t kMaxColumns = 4;
+
+ private:
+  struct Column {
+    std::size_t k = 0;
+    uint64_t last_use = 0;
+    bool dense = true;               // phi covers every sample; otherwise only `index`
+    std::vector<uint32_t> index;     // sample indices with non-zero phi (sparse columns)
+    std::vector<Jet> phi;
+  };
+  const Column& column(std::size_t k);
+  void update_geometry(std::size_t sample);
+
+  std::shared_ptr<Patch> patch_;
+  std::shared_ptr<const Tessellation> tessellation_;
+  std::vector<SurfaceJet> jets_;
+  std::vector<SurfaceGeometry> geometry_;
+  std::vector<Column> columns_;
+  uint64_t use_clock_ = 0;
+  uint64_t revision_ = 0;
+};
+
+}  // namespace pl

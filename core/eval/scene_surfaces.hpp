@@ -1,0 +1,40 @@
+// Every surface of a scene, evaluated at one density: explicit patches and filled network faces,
+// with the shared edges between network faces for continuity analysis.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/domain/tessellation_cache.hpp"
+#include "core/eval/patch_evaluator.hpp"
+#include "core/network/network_filling.hpp"
+#include "core/scene/scene.hpp"
+
+namespace pl {
+
+struct SceneSurface {
+  std::string name;  // the face's or patch's name, or face<i> / patch<i>
+  int face = -1;     // network face index, or -1 for an explicit patch
+  std::vector<int> patch_side;  // for faces: face side -> patch domain side
+  std::unique_ptr<PatchEvaluator> evaluator;
+};
+
+struct SharedEdge {
+  int edge = -1;
+  int surface[2] = {-1, -1};  // indices into SceneSurfaces::surfaces
+  int side[2] = {-1, -1};     // patch domain sides; side 1 runs opposite to side 0
+};
+
+struct SceneSurfaces {
+  std::vector<SceneSurface> surfaces;
+  std::vector<SharedEdge> shared_edges;
+  std::vector<ProjectedVertex> projected_vertices;
+};
+
+// Throws DataError for data it cannot evaluate. density >= 1.
+SceneSurfaces evaluate_scene(const Scene& scene, int density, std::optional<FaceScheme> scheme,
+                             TessellationCache& cache, const std::string& source);
+
+}  // namespace pl

@@ -1,0 +1,54 @@
+// Validating access to a parsed JSON document: every accessor knows its JSON path and throws a
+// DataError naming the file and that path ("faces[3].loop[2]: expected an integer").
+#pragma once
+
+#include <initializer_list>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/io/data_error.hpp"
+#include "core/math/vec.hpp"
+
+namespace pl {
+
+class JsonNode {
+ public:
+  JsonNode(const nlohmann::json& value, const std::string& source, std::string path = "")
+      : value_(&value), source_(&source), path_(std::move(path)) {}
+
+  const std::string& path() const { return path_; }
+  const nlohmann::json& raw() const { return *value_; }
+  [[noreturn]] void fail(const std::string& message) const;
+
+  bool is_null() const { return value_->is_null(); }
+  // Objects
+  void require_object() const;
+  JsonNode at(const std::string& key) const;  // required key
+  std::optional<JsonNode> find(const std::string& key) const;
+  void allow_only(std::initializer_list<const char*> keys) const;  // rejects unknown keys
+  // Arrays
+  std::vector<JsonNode> items() const;
+  std::vector<JsonNode> items(std::size_t exact_length) const;
+  // Scalars
+  double number() const;  // finite
+  long long integer() const;
+  int integer_in(long long lo, long long hi) const;
+  std::string string() const;
+  Vec3 point() const;  // [x, y, z]
+  std::vector<Vec3> points() const;
+
+ private:
+  std::string child_path(const std::string& key) const;
+  std::string child_path(std::size_t index) const;
+
+  const nlohmann::json* value_;
+  const std::string* source_;
+  std::string path_;
+};
+
+// Parses text as JSON; a syntax error is a DataError naming line and column.
+nlohmann::json parse_json(const std::string& text, const std::string& source);
+
+}  // namespace pl

@@ -1,0 +1,30 @@
+// Reading and writing explicit patches of the scene format, one codec per "type".
+// New patch types add a codec in their own file and one line to patch_codecs.cpp.
+#pragma once
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <span>
+#include <string>
+
+#include "core/io/json_node.hpp"
+#include "core/patch/patch.hpp"
+
+namespace pl {
+
+struct PatchCodec {
+  const char* type;
+  // Reads the patch object (its "type" and "name" keys are already known to be valid).
+  std::unique_ptr<Patch> (*read)(const JsonNode& node);
+  // Writes every key except "type" and "name".
+  void (*write)(const Patch& patch, nlohmann::json& out);
+};
+
+std::span<const PatchCodec> patch_codecs();
+const PatchCodec* find_patch_codec(const std::string& type);
+
+// Helpers shared by codecs.
+nlohmann::json point_json(const Vec3& p);
+nlohmann::json points_json(const std::vector<Vec3>& points);
+
+}  // namespace pl

@@ -1,0 +1,29 @@
+#include <array>
+
+#include "core/io/bezier_patch_codec.hpp"
+#include "core/io/patch_codec.hpp"
+
+namespace pl {
+
+std::span<const PatchCodec> patch_codecs() {
+  static const std::array codecs{
+      PatchCodec{"bezier", read_bezier_patch, write_bezier_patch},
+  };
+  return codecs;
+}
+
+const PatchCodec* find_patch_codec(const std::string& type) {
+  for (const PatchCodec& c : patch_codecs())
+    if (type == c.type) return &c;
+  return nullptr;
+}
+
+nlohmann::json point_json(const Vec3& p) { return nlohmann::json::array({p.x, p.y, p.z}); }
+
+nlohmann::json points_json(const std::vector<Vec3>& points) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const Vec3& p : points) a.push_back(point_json(p));
+  return a;
+}
+
+}  // namespace pl

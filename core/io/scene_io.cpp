@@ -1,0 +1,166 @@
+#include "core/io/scene_io.hpp"
+
+#include "core/io/atomic_file.hpp"
+#include "core/io/json_node.hpp"
+#include "core/io/patch_codec.hpp"
+
+namespace pl {
+
+namespace {
+
+FaceScheme read_scheme(const JsonNode& node, int sides) {
+  const std::string s = node.string();
+  if (s == "auto") return FaceScheme::Auto;
+  if (s == "gb") return FaceScheme::GB;
+  if (s == "gregory") {
+    if (sides != 3 && sides != 4)
+      node.fail("scheme \"gregory\" needs a face of 3 or 4 sides, this one has " +
+                std::to_string(sides));
+    return FaceScheme::Gregory;
+  }
+  node.fail("unknown scheme \"" + s + "\" (allowed: auto, gregory, gb)");
+}
+
+Network read_network(const JsonNode& node) {
+  node.allow_only({"vertices", "normals", "edges", "faces"});
+  Network net;
+  if (auto v = node.find("vertices")) net.vertices = v->points();
+  const int nv = static_cast<int>(net.vertices.size());
+  if (auto normals = node.find("normals")) {
+    for (const JsonNode& n : normals->items(net.vertices.size())) {
+      if (n.is_null()) {
+        net.normals.emplace_back();
+        continue;
+      }
+      const Vec3 v = n.point();
+      if (glm::length(v) == 0) n.fail("a normal must not be the zero vector");
+      net.normals.emplace_back(glm::normalize(v));
+    }
+  }
+  if (auto edges = node.find("edges"))
+    for (const JsonNode& e : edges->items()) {
+      e.allow_only({"v", "handles", "name"});
+      NetworkEdge ed;
+      const auto v = e.at("v").items(2);
+      for (int k = 0; k < 2; ++k) ed.v[k] = v[k].integer_in(0, nv > 0 ? nv - 1 : -1);
+      const auto h = e.at("handles").items(2);
+      ed.handles = {h[0].point(), h[1].point()};
+      if (auto name = e.find("name")) ed.name = name->string();
+      net.edges.push_back(std::move(ed));
+    }
+  if (auto faces = node.find("faces"))
+    for (const JsonNode& f : faces->items()) {
+      f.allow_only({"loop", "scheme", "name"});
+      NetworkFace face;
+      for (const JsonNode& i : f.at("loop").items()) {
+        const long long idx = i.integer();
+        if (idx < 0 || idx >= nv)
+          i.fail("vertex " + std::to_string(idx) + " does not exist (" + std::to_string(nv) +
+                 " vertices)");
+        face.loop.push_back(static_cast<int>(idx));
+      }
+      if (auto s = f.find("scheme")) face.scheme = read_scheme(*s, static_cast<int>(face.loop.size()));
+      if (auto name = f.find("name")) face.name = name->string();
+      net.faces.push_back(std::move(face));
+    }
+  return net;
+}
+
+ScenePatch read_patch(const JsonNode& node) {
+  node.require_object();
+  const JsonNode type = node.at("type");
+  const std::string t = type.string();
+  const PatchCodec* codec = find_patch_codec(t);
+  if (!codec) {
+    std::string known;
+    for (const PatchCodec& c : patch_codecs()) known += std::string(known.empty() ? "" : ", ") + c.type;
+    type.fail("unknown patch type \"" + t + "\" (known: " + known + ")");
+  }
+  ScenePatch sp;
+  if (auto name = node.find("name")) sp.name = name->string();
+  try {
+    sp.patch = codec->read(node);
+  } catch (const std::invalid_argument& e) {  // a constructor rejected the data
+    node.fail(e.what());
+  }
+  return sp;
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& text, const std::string& source) {
+  const nlohmann::json doc = parse_json(text, source);
+  const JsonNode root(doc, source);
+  root.require_object();
+  const JsonNode version = root.at("patchlab");
+  if (!version.raw().is_number_integer() || version.raw().get<long long>() != 1)
+    version.fail("unsupported format version " + version.raw().dump() + " (this reader knows 1)");
+  root.allow_only({"patchlab", "name", "network", "patches", "view"});
+  Scene scene;
+  if (auto name = root.find("name")) scene.name = name->string();
+  if (auto net = root.find("network")) {
+    scene.network = read_network(*net);
+    validate_network(*scene.network, source);
+  }
+  if (auto patches = root.find("patches"))
+    for (const JsonNode& p : patches->items()) scene.patches.push_back(read_patch(p));
+  if (auto view = root.find("view")) {
+    view->require_object();
+    scene.view_json = view->raw().dump();
+  }
+  return scene;
+}
+
+Scene read_scene(const std::filesystem::path& path) {
+  return parse_scene(read_text_file(path), path.string());
+}
+
+std::string scene_to_json(const Scene& scene) {
+  nlohmann::json doc;
+  doc["patchlab"] = 1;
+  if (!scene.name.empty()) doc["name"] = scene.name;
+  if (scene.network) {
+    const Network& n = *scene.network;
+    nlohmann::json net;
+    net["vertices"] = points_json(n.vertices);
+    if (!n.normals.empty()) {
+      nlohmann::json normals = nlohmann::json::array();
+      for (const auto& v : n.normals) normals.push_back(v ? point_json(*v) : nlohmann::json());
+      net["normals"] = normals;
+    }
+    net["edges"] = nlohmann::json::array();
+    for (const NetworkEdge& e : n.edges) {
+      nlohmann::json je{{"v", {e.v[0], e.v[1]}},
+                        {"handles", {point_json(e.handles[0]), point_json(e.handles[1])}}};
+      if (!e.name.empty()) je["name"] = e.name;
+      net["edges"].push_back(je);
+    }
+    net["faces"] = nlohmann::json::array();
+    for (const NetworkFace& f : n.faces) {
+      nlohmann::json jf{{"loop", f.loop}};
+      if (f.scheme == FaceScheme::Gregory) jf["scheme"] = "gregory";
+      if (f.scheme == FaceScheme::GB) jf["scheme"] = "gb";
+      if (!f.name.empty()) jf["name"] = f.name;
+      net["faces"].push_back(jf);
+    }
+    doc["network"] = net;
+  }
+  if (!scene.patches.empty()) {
+    doc["patches"] = nlohmann::json::array();
+    for (const ScenePatch& sp : scene.patches) {
+      nlohmann::json jp;
+      jp["type"] = sp.patch->type();
+      if (!sp.name.empty()) jp["name"] = sp.name;
+      find_patch_codec(sp.patch->type())->write(*sp.patch, jp);
+      doc["patches"].push_back(jp);
+    }
+  }
+  if (!scene.view_json.empty()) doc["view"] = nlohmann::json::parse(scene.view_json);
+  return doc.dump(1) + "\n";
+}
+
+void write_scene(const std::filesystem::path& path, const Scene& scene) {
+  write_file_atomically(path, scene_to_json(scene));
+}
+
+}  // namespace pl

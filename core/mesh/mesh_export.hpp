@@ -1,0 +1,19 @@
+// Writes tessellated surfaces as OBJ, PLY (with per-vertex curvature), OFF or STL, atomically.
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+#include "core/mesh/surface_mesh.hpp"
+
+namespace pl {
+
+enum class MeshFormat { Obj, Ply, Off, Stl };
+
+// From the file extension; throws DataError for an unknown one.
+MeshFormat mesh_format_for(const std::filesystem::path& path);
+
+// Throws DataError on failure; the previous file is left intact.
+void export_meshes(const std::vector<SurfaceMesh>& meshes, const std::filesystem::path& path);
+
+}  // namespace pl

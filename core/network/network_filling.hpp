@@ -1,0 +1,37 @@
+// Fills the faces of a validated curve network with patches (Gregory or GB) whose
+// cross-boundary tangents come from the Chiyokura–Kimura construction.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/patch/patch.hpp"
+#include "core/scene/network.hpp"
+
+namespace pl {
+
+struct FacePatch {
+  int face = -1;
+  std::shared_ptr<Patch> patch;
+  // patch_side[i]: the patch domain side that carries face side i, traversed in the same
+  // direction (from loop[i] to loop[i+1]) with side parameter = edge curve parameter.
+  std::vector<int> patch_side;
+};
+
+struct ProjectedVertex {
+  int vertex = -1;
+  double max_angle_deg = 0;  // largest angle by which an edge end tangent left the plane
+};
+
+struct NetworkFilling {
+  std::vector<FacePatch> faces;
+  std::vector<ProjectedVertex> projected_vertices;
+};
+
+// Throws DataError (source, "network.faces[i]", ...) for geometry it cannot fill.
+NetworkFilling fill_network(const Network& network, const NetworkTopology& topology,
+                            std::optional<FaceScheme> scheme_override, const std::string& source);
+
+}  // namespace pl

@@ -1,0 +1,65 @@
+// The one interface of every patch (architecture note 1): a domain, control points, and a
+// basis with S(x) = sum_k C_k phi_k(x). phi_k may be rational; for fixed weights the surface is
+// linear in the control points, which is what incremental re-evaluation relies on.
+#pragma once
+
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/curve/bezier_curve.hpp"
+#include "core/domain/domain.hpp"
+#include "core/math/jet.hpp"
+#include "core/patch/surface_jet.hpp"
+
+namespace pl {
+
+// How a control point is drawn and what it means to the designer.
+enum class ControlPointKind { Boundary, Inner, Twin, Central };
+
+class Patch {
+ public:
+  virtual ~Patch() = default;
+  virtual std::unique_ptr<Patch> clone() const = 0;
+
+  // The scene-format type name ("bezier", "gb", "gregory-quad", ...).
+  virtual std::string type() const = 0;
+  virtual const Domain& domain() const = 0;
+
+  std::size_t size() const { return points_.size(); }
+  const std::vector<Vec3>& control_points() const { return points_; }
+  const Vec3& control_point(std::size_t k) const { return points_.at(k); }
+  // Overridden by patches whose points are tied together (e.g. shared GB corner blocks).
+  virtual void set_control_point(std::size_t k, const Vec3& p) { points_.at(k) = p; }
+  virtual ControlPointKind kind(std::size_t k) const = 0;
+
+  // phi_k with first and second (u, v) derivatives at domain point x, for every k.
+  // out.size() == size().
+  virtual void basis(Vec2 x, std::span<Jet> out) const = 0;
+
+  // S and its derivatives at x. The default sums the basis; patch types override it with
+  // faster or better-conditioned forms (tests check both agree).
+  virtual SurfaceJet evaluate(Vec2 x) const;
+
+  // phi_k (one control point) at many domain points: the influence column of a drag.
+  // The default evaluates the whole basis at every point.
+  virtual void influence(std::size_t k, std::span<const Vec2> xs, std::span<Jet> out) const;
+
+  // The curve each domain side must interpolate, parameterised like the side (side parameter t
+  // is curve parameter t). Used to measure boundary deviation independently of evaluate().
+  virtual std::vector<BezierCurve> boundary_curves() const = 0;
+
+ protected:
+  Patch() = default;
+  explicit Patch(std::vector<Vec3> points) : points_(std::move(points)) {}
+  Patch(const Patch&) = default;
+  Patch& operator=(const Patch&) = default;
+
+  std::vector<Vec3> points_;
+};
+
+// Sum of C_k phi_k: the reference evaluation used by the default evaluate() and by tests.
+SurfaceJet combine(std::span<const Vec3> points, std::span<const Jet> phi);
+
+}  // namespace pl

@@ -1,0 +1,98 @@
+#include "core/scene/network.hpp"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "core/io/data_error.hpp"
+
+namespace pl {
+
+BezierCurve Network::edge_curve(int e) const {
+  const NetworkEdge& ed = edges.at(e);
+  return BezierCurve({vertices.at(ed.v[0]), ed.handles[0], ed.handles[1], vertices.at(ed.v[1])});
+}
+
+NetworkTopology validate_network(const Network& net, const std::string& source) {
+  const auto fail = [&](const std::string& path, const std::string& msg) {
+    throw DataError(source, "network." + path, msg);
+  };
+  const int nv = static_cast<int>(net.vertices.size());
+  if (!net.normals.empty() && net.normals.size() != net.vertices.size())
+    fail("normals", "has " + std::to_string(net.normals.size()) + " entries for " +
+                        std::to_string(nv) + " vertices");
+  NetworkTopology topo;
+  topo.vertex_edges.resize(nv);
+  topo.edge_faces.resize(net.edges.size());
+  std::map<std::pair<int, int>, int> edge_of;  // unordered vertex pair -> edge
+  for (std::size_t e = 0; e < net.edges.size(); ++e) {
+    const auto& ed = net.edges[e];
+    const std::string path = "edges[" + std::to_string(e) + "].v";
+    for (int k = 0; k < 2; ++k)
+      if (ed.v[k] < 0 || ed.v[k] >= nv)
+        fail(path + "[" + std::to_string(k) + "]", "vertex " + std::to_string(ed.v[k]) +
+                                                        " does not exist (" + std::to_string(nv) +
+                                                        " vertices)");
+    if (ed.v[0] == ed.v[1]) fail(path, "an edge must join two different vertices");
+    const auto key = std::minmax(ed.v[0], ed.v[1]);
+    if (auto [it, fresh] = edge_of.emplace(key, static_cast<int>(e)); !fresh)
+      fail(path, "vertices " + std::to_string(key.first) + " and " + std::to_string(key.second) +
+                     " are already joined by edge " + std::to_string(it->second));
+    topo.vertex_edges[ed.v[0]].push_back(static_cast<int>(e));
+    topo.vertex_edges[ed.v[1]].push_back(static_cast<int>(e));
+  }
+  for (std::size_t f = 0; f < net.faces.size(); ++f) {
+    const auto& loop = net.faces[f].loop;
+    const std::string path = "faces[" + std::to_string(f) + "].loop";
+    const int n = static_cast<int>(loop.size());
+    if (n < 3) fail(path, "a face needs at least 3 vertices, got " + std::to_string(n));
+    std::set<int> seen;
+    for (int i = 0; i < n; ++i) {
+      const std::string ipath = path + "[" + std::to_string(i) + "]";
+      if (loop[i] < 0 || loop[i] >= nv)
+        fail(ipath, "vertex " + std::to_string(loop[i]) + " does not exist (" +
+                        std::to_string(nv) + " vertices)");
+      if (!seen.insert(loop[i]).second)
+        fail(ipath, "vertex " + std::to_string(loop[i]) + " appears twice in the loop");
+    }
+    std::vector<FaceSide> sides(n);
+    for (int i = 0; i < n; ++i) {
+      const int a = loop[i], b = loop[(i + 1) % n];
+      auto it = edge_of.find(std::minmax(a, b));
+      if (it == edge_of.end())
+        fail(path + "[" + std::to_string(i) + "]",
+             "no edge joins vertices " + std::to_string(a) + " and " + std::to_string(b));
+      const int e = it->second;
+      sides[i] = {e, net.edges[e].v[0] != a};
+      auto& uses = topo.edge_faces[e];
+      if (uses.size() == 2)
+        fail(path + "[" + std::to_string(i) + "]",
+             "edge " + std::to_string(e) + " is already used by faces " +
+                 std::to_string(uses[0].face) + " and " + std::to_string(uses[1].face));
+      if (uses.size() == 1) {
+        const FaceSide& other = topo.face_sides[uses[0].face][uses[0].side];
+        if (other.reversed == sides[i].reversed)
+          fail(path + "[" + std::to_string(i) + "]",
+               "edge " + std::to_string(e) + " is traversed in the same direction by face " +
+                   std::to_string(uses[0].face) +
+                   "; faces sharing an edge must traverse it in opposite directions");
+      }
+      uses.push_back({static_cast<int>(f), i});
+    }
+    topo.face_sides.push_back(std::move(sides));
+  }
+  return topo;
+}
+
+FaceScheme resolve_scheme(const NetworkFace& face, std::optional<FaceScheme> override_scheme) {
+  const int n = static_cast<int>(face.loop.size());
+  const bool gregory_allowed = n == 3 || n == 4;
+  FaceScheme s = override_scheme.value_or(face.scheme);
+  if (override_scheme && *override_scheme == FaceScheme::Gregory && !gregory_allowed)
+    s = face.scheme;  // the CLI spec: other faces keep gb
+  if (s == FaceScheme::Auto) s = gregory_allowed ? FaceScheme::Gregory : FaceScheme::GB;
+  if (s == FaceScheme::Gregory && !gregory_allowed) s = FaceScheme::GB;
+  return s;
+}
+
+}  // namespace pl

@@ -1,0 +1,62 @@
+// The curve network of scene-format.md: cubic Bézier edges meeting at vertices; faces are closed
+// loops of edges. Face side i runs from loop[i] to loop[i+1] (indices mod n) along the edge that
+// joins them, traversed forwards or backwards.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/curve/bezier_curve.hpp"
+
+namespace pl {
+
+enum class FaceScheme { Auto, Gregory, GB };
+
+struct NetworkEdge {
+  std::array<int, 2> v{0, 0};  // start and end vertex
+  std::array<Vec3, 2> handles{Vec3(0), Vec3(0)};
+  std::string name;
+};
+
+struct NetworkFace {
+  std::vector<int> loop;
+  FaceScheme scheme = FaceScheme::Auto;
+  std::string name;
+};
+
+struct Network {
+  std::vector<Vec3> vertices;
+  std::vector<std::optional<Vec3>> normals;  // empty, or one per vertex
+  std::vector<NetworkEdge> edges;
+  std::vector<NetworkFace> faces;
+
+  // The cubic edge e with control points vertex a, h1, h2, vertex b.
+  BezierCurve edge_curve(int e) const;
+};
+
+// How face sides use edges; computed by validate_network.
+struct FaceSide {
+  int edge = -1;
+  bool reversed = false;  // the side runs from edge end to edge start
+};
+struct EdgeUse {
+  int face = -1, side = -1;
+};
+struct NetworkTopology {
+  std::vector<std::vector<FaceSide>> face_sides;  // [face][side]
+  std::vector<std::vector<EdgeUse>> edge_faces;   // [edge]: 0, 1 or 2 uses
+  std::vector<std::vector<int>> vertex_edges;     // [vertex]: incident edges
+};
+
+// Checks the rules of scene-format.md (vertex indices, loops, one edge per consecutive pair,
+// shared edges traversed in opposite directions, at most two faces per edge). Throws DataError
+// with source and the JSON path of the offending item ("network.faces[3].loop[2]").
+NetworkTopology validate_network(const Network& network, const std::string& source);
+
+// The scheme a face is filled with: Auto resolves to Gregory for 3 and 4 sides, GB otherwise;
+// an override (from --scheme) applies where the face allows it.
+FaceScheme resolve_scheme(const NetworkFace& face, std::optional<FaceScheme> override_scheme);
+
+}  // namespace pl
