@@ -94,6 +94,7 @@ Tessellation ConvexPolygonDomain::tessellate(int density) const {
   t.sides.assign(n, std::vector<uint32_t>(N + 1));
   for (int i = 0; i < n; ++i)
     for (int k = 0; k <= N; ++k) t.sides[i][k] = id(N, i, k);
+  snap_side_samples(*this, t);
   return t;
 }
 

@@ -23,4 +23,9 @@ class Domain {
   virtual Tessellation tessellate(int density) const = 0;
 };
 
+// Sets every side sample to exactly side_point(side, k / density): a sample computed as
+// (n - k) / n can differ by one ulp from 1 - k / n, and neighbouring patches must sample their
+// shared edge at the very same curve parameters. Every tessellate() ends with this.
+void snap_side_samples(const Domain& domain, Tessellation& t);
+
 }  // namespace pl

@@ -36,6 +36,7 @@ Tessellation UnitSquareDomain::tessellate(int n) const {
     t.sides[2][k] = id(n - k, n);
     t.sides[3][k] = id(0, n - k);
   }
+  snap_side_samples(*this, t);
   return t;
 }
 

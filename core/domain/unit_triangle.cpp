@@ -38,6 +38,7 @@ Tessellation UnitTriangleDomain::tessellate(int n) const {
     t.sides[1][k] = id(n - k, k);
     t.sides[2][k] = id(0, n - k);
   }
+  snap_side_samples(*this, t);
   return t;
 }
 
