@@ -1,5 +1,7 @@
-// OBJ is written by hand because the CLI contract asks for one named object ("o NAME") per patch,
-// which OpenMesh's OBJ writer cannot express; PLY, OFF and STL go through OpenMesh.
+// OBJ and PLY are written by hand: the CLI contract asks for one named object ("o NAME") per patch
+// in OBJ, which OpenMesh's OBJ writer cannot express, and OpenMesh 9's PLY writer stores positions
+// and normals as 32-bit floats even for double meshes, which would throw away the exact normals.
+// OFF and STL (single precision by definition) go through OpenMesh.
 #include "core/mesh/mesh_export.hpp"
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
@@ -43,14 +45,40 @@ void write_obj(const std::vector<SurfaceMesh>& meshes, const std::filesystem::pa
   if (!ok) throw DataError(tmp.string(), "", "write failed (disk full?)");
 }
 
+void write_ply(const std::vector<SurfaceMesh>& meshes, const std::filesystem::path& tmp) {
+  std::FILE* f = std::fopen(tmp.c_str(), "wb");
+  if (!f) throw DataError(tmp.string(), "", "cannot write");
+  std::size_t nv = 0, nf = 0;
+  for (const SurfaceMesh& m : meshes) nv += m.positions.size(), nf += m.triangles.size();
+  std::fprintf(f,
+               "ply\nformat ascii 1.0\ncomment PatchLab %s: exact normals and curvatures\n"
+               "element vertex %zu\n"
+               "property double x\nproperty double y\nproperty double z\n"
+               "property double nx\nproperty double ny\nproperty double nz\n"
+               "property double mean_curvature\nproperty double gaussian_curvature\n"
+               "property double k_min\nproperty double k_max\n"
+               "element face %zu\nproperty list uchar uint vertex_indices\nend_header\n",
+               PATCHLAB_VERSION, nv, nf);
+  for (const SurfaceMesh& m : meshes)
+    for (std::size_t i = 0; i < m.positions.size(); ++i) {
+      const Vec3 &p = m.positions[i], &n = m.normals[i];
+      std::fprintf(f, "%.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", p.x, p.y,
+                   p.z, n.x, n.y, n.z, m.mean[i], m.gaussian[i], m.kmin[i], m.kmax[i]);
+    }
+  std::size_t base = 0;
+  for (const SurfaceMesh& m : meshes) {
+    for (const auto& t : m.triangles)
+      std::fprintf(f, "3 %zu %zu %zu\n", t[0] + base, t[1] + base, t[2] + base);
+    base += m.positions.size();
+  }
+  const bool ok = std::fflush(f) == 0 && !std::ferror(f);
+  std::fclose(f);
+  if (!ok) throw DataError(tmp.string(), "", "write failed (disk full?)");
+}
+
 void write_with_openmesh(const std::vector<SurfaceMesh>& meshes, const std::filesystem::path& tmp,
                          MeshFormat format) {
   OMesh mesh;
-  OpenMesh::VPropHandleT<double> mean, gauss;
-  mesh.add_property(mean, "mean_curvature");
-  mesh.add_property(gauss, "gaussian_curvature");
-  mesh.property(mean).set_persistent(true);
-  mesh.property(gauss).set_persistent(true);
   for (const SurfaceMesh& m : meshes) {
     std::vector<OMesh::VertexHandle> vh;
     vh.reserve(m.positions.size());
@@ -59,15 +87,11 @@ void write_with_openmesh(const std::vector<SurfaceMesh>& meshes, const std::file
       const Vec3& n = m.normals[i];
       auto h = mesh.add_vertex(OpenMesh::Vec3d(p.x, p.y, p.z));
       mesh.set_normal(h, OpenMesh::Vec3d(n.x, n.y, n.z));
-      mesh.property(mean, h) = m.mean[i];
-      mesh.property(gauss, h) = m.gaussian[i];
       vh.push_back(h);
     }
     for (const auto& t : m.triangles) mesh.add_face(vh[t[0]], vh[t[1]], vh[t[2]]);
   }
   OpenMesh::IO::Options opt;
-  if (format == MeshFormat::Ply) opt += OpenMesh::IO::Options::VertexNormal;
-  if (format == MeshFormat::Ply) opt += OpenMesh::IO::Options::Custom;
   if (format == MeshFormat::Stl) opt += OpenMesh::IO::Options::Binary;
   // OpenMesh picks the writer from the extension, so give the temporary file the right one.
   if (!OpenMesh::IO::write_mesh(mesh, tmp.string(), opt, 17))
@@ -93,6 +117,7 @@ void export_meshes(const std::vector<SurfaceMesh>& meshes, const std::filesystem
     const std::filesystem::path tmp = tmp_in.string() + path.extension().string();
     try {
       if (format == MeshFormat::Obj) write_obj(meshes, tmp);
+      else if (format == MeshFormat::Ply) write_ply(meshes, tmp);
       else write_with_openmesh(meshes, tmp, format);
       std::filesystem::rename(tmp, tmp_in);
     } catch (...) {
