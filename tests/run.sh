@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# The whole test suite from a fresh Debian 12 machine: installs the packages, builds, runs ctest.
+#   bash tests/run.sh             Release build in build/, every test
+#   bash tests/run.sh --sanitize  Debug build with AddressSanitizer + UndefinedBehaviorSanitizer
+#                                 in build-asan/, every test
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+mode=${1:-release}
+[ "${PATCHLAB_SKIP_INSTALL:-0}" = 1 ] || bash .ci/install-deps
+if [ "$mode" = "--sanitize" ]; then
+  dir=build-asan
+  cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DPATCHLAB_SANITIZE=ON
+  # LeakSanitizer reports Mesa's and libgomp's process-lifetime allocations; those are not ours.
+  export LSAN_OPTIONS="suppressions=$root/tests/lsan.supp:print_suppressions=0"
+  export ASAN_OPTIONS="detect_odr_violation=0:strict_string_checks=1"
+  export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+else
+  dir=build
+  cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release
+fi
+cmake --build "$dir"
+# OpenMP: two threads on the two-core machines we target, also under ctest's parallel runs.
+export OMP_NUM_THREADS=${OMP_NUM_THREADS:-2}
+unset DISPLAY  # headless tests must not depend on an X server
+ctest --test-dir "$dir" --output-on-failure -j2
