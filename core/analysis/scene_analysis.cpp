@@ -10,7 +10,9 @@ namespace pl {
 
 namespace {
 
-bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const Vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 bool finite_sample(const SurfaceJet& j, const SurfaceGeometry& g) {
   return finite(j.p) && finite(j.su) && finite(j.sv) && finite(j.suu) && finite(j.suv) &&
@@ -79,7 +81,8 @@ EdgeReport analyze_edge(const SceneSurfaces& ss, const SharedEdge& e) {
     const std::size_t sa = ia[k], sb = ib[n - 1 - k];  // b runs the edge the other way
     const auto& ga = a.evaluator->geometry()[sa];
     const auto& gb = b.evaluator->geometry()[sb];
-    r.max_gap = std::max(r.max_gap, glm::length(a.evaluator->jets()[sa].p - b.evaluator->jets()[sb].p));
+    r.max_gap =
+        std::max(r.max_gap, glm::length(a.evaluator->jets()[sa].p - b.evaluator->jets()[sb].p));
     r.max_normal_angle_deg = std::max(r.max_normal_angle_deg, angle_deg(ga.normal, gb.normal));
     r.max_mean_curvature_jump = std::max(r.max_mean_curvature_jump, std::fabs(ga.mean - gb.mean));
   }
@@ -122,8 +125,8 @@ std::string report_to_json(const SceneReport& r) {
                           {"max_mean_curvature_jump", e.max_mean_curvature_jump}});
   j["vertices"] = nlohmann::json::array();
   for (const VertexReport& v : r.vertices)
-    j["vertices"].push_back({{"vertex", v.vertex},
-                             {"tangent_plane_deviation_deg", v.tangent_plane_deviation_deg}});
+    j["vertices"].push_back(
+        {{"vertex", v.vertex}, {"tangent_plane_deviation_deg", v.tangent_plane_deviation_deg}});
   return j.dump(2) + "\n";
 }
 

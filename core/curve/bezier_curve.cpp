@@ -63,7 +63,9 @@ std::pair<BezierCurve, BezierCurve> BezierCurve::split(double t) const {
   return {BezierCurve(std::move(left)), BezierCurve(std::move(right))};
 }
 
-BezierCurve BezierCurve::reversed() const { return BezierCurve({cp_.rbegin(), cp_.rend()}); }
+BezierCurve BezierCurve::reversed() const {
+  return BezierCurve({cp_.rbegin(), cp_.rend()});
+}
 
 BezierCurve BezierCurve::derivative() const {
   const int n = degree();

@@ -8,7 +8,9 @@
 namespace pl {
 
 namespace {
-double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+double cross(Vec2 a, Vec2 b) {
+  return a.x * b.y - a.y * b.x;
+}
 }  // namespace
 
 ConvexPolygonDomain::ConvexPolygonDomain(std::vector<Vec2> vertices)
@@ -89,7 +91,8 @@ Tessellation ConvexPolygonDomain::tessellate(int density) const {
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < r; ++j) {
         t.triangles.push_back({id(r, i, j), id(r, i, j + 1), id(r - 1, i, j)});
-        if (j + 1 < r) t.triangles.push_back({id(r - 1, i, j), id(r, i, j + 1), id(r - 1, i, j + 1)});
+        if (j + 1 < r)
+          t.triangles.push_back({id(r - 1, i, j), id(r, i, j + 1), id(r - 1, i, j + 1)});
       }
   t.sides.assign(n, std::vector<uint32_t>(N + 1));
   for (int i = 0; i < n; ++i)

@@ -11,7 +11,7 @@ namespace pl {
 
 struct Tessellation {
   int density = 0;
-  std::vector<Vec2> points;                       // domain points (the samples)
+  std::vector<Vec2> points;                        // domain points (the samples)
   std::vector<std::array<uint32_t, 3>> triangles;  // counter-clockwise in the domain
   // For each domain side: the indices of its density + 1 samples, at side parameter k / density,
   // from the side's start vertex (k = 0) to its end vertex (k = density).

@@ -6,10 +6,14 @@ namespace pl {
 
 Vec2 UnitSquareDomain::side_point(int side, double t) const {
   switch (side & 3) {
-    case 0: return {t, 0};
-    case 1: return {1, t};
-    case 2: return {1 - t, 1};
-    default: return {0, 1 - t};
+    case 0:
+      return {t, 0};
+    case 1:
+      return {1, t};
+    case 2:
+      return {1 - t, 1};
+    default:
+      return {0, 1 - t};
   }
 }
 

@@ -6,9 +6,12 @@ namespace pl {
 
 Vec2 UnitTriangleDomain::side_point(int side, double t) const {
   switch (side % 3) {
-    case 0: return {t, 0};
-    case 1: return {1 - t, t};
-    default: return {0, 1 - t};
+    case 0:
+      return {t, 0};
+    case 1:
+      return {1 - t, t};
+    default:
+      return {0, 1 - t};
   }
 }
 

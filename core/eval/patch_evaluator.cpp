@@ -87,8 +87,9 @@ const PatchEvaluator::Column& PatchEvaluator::column(std::size_t k) {
     c.phi = std::move(packed);
   }
   if (columns_.size() >= kMaxColumns) {
-    auto oldest = std::min_element(columns_.begin(), columns_.end(),
-                                   [](const Column& a, const Column& b) { return a.last_use < b.last_use; });
+    auto oldest =
+        std::min_element(columns_.begin(), columns_.end(),
+                         [](const Column& a, const Column& b) { return a.last_use < b.last_use; });
     *oldest = std::move(c);
     return *oldest;
   }
@@ -96,7 +97,9 @@ const PatchEvaluator::Column& PatchEvaluator::column(std::size_t k) {
   return columns_.back();
 }
 
-void PatchEvaluator::prepare_influence(std::size_t k) { column(k); }
+void PatchEvaluator::prepare_influence(std::size_t k) {
+  column(k);
+}
 
 std::size_t PatchEvaluator::move_control_point(std::size_t k, const Vec3& p) {
   assert(k < patch_->size());

@@ -47,8 +47,8 @@ class PatchEvaluator {
   struct Column {
     std::size_t k = 0;
     uint64_t last_use = 0;
-    bool dense = true;               // phi covers every sample; otherwise only `index`
-    std::vector<uint32_t> index;     // sample indices with non-zero phi (sparse columns)
+    bool dense = true;            // phi covers every sample; otherwise only `index`
+    std::vector<uint32_t> index;  // sample indices with non-zero phi (sparse columns)
     std::vector<Jet> phi;
   };
   const Column& column(std::size_t k);

@@ -15,8 +15,8 @@
 namespace pl {
 
 struct SceneSurface {
-  std::string name;  // the face's or patch's name, or face<i> / patch<i>
-  int face = -1;     // network face index, or -1 for an explicit patch
+  std::string name;             // the face's or patch's name, or face<i> / patch<i>
+  int face = -1;                // network face index, or -1 for an explicit patch
   std::vector<int> patch_side;  // for faces: face side -> patch domain side
   std::unique_ptr<PatchEvaluator> evaluator;
 };

@@ -9,35 +9,38 @@ namespace {
 // |Su x Sv| below this fraction of |Su||Sv| (sine of the angle between them) counts as singular.
 constexpr double kSingularSine = 1e-12;
 
-bool normal_of(const SurfaceJet& s, Vec3& n) {
-  const Vec3 c = glm::cross(s.su, s.sv);
-  const double len = glm::length(c);
-  const double scale = glm::length(s.su) * glm::length(s.sv);
-  if (!(len > kSingularSine * scale) || !(len > 0) || !std::isfinite(len)) return false;
-  n = c / len;
+// Unit normal, or false where Su x Sv vanishes. Compares squared lengths to spare two square
+// roots on the hot path of every drag update.
+bool normal_of(const SurfaceJet& s, Vec3& n, Vec3& c, double& len2) {
+  c = glm::cross(s.su, s.sv);
+  len2 = glm::dot(c, c);
+  const double scale2 = glm::dot(s.su, s.su) * glm::dot(s.sv, s.sv);
+  if (!(len2 > kSingularSine * kSingularSine * scale2) || !(len2 > 0) || !std::isfinite(len2))
+    return false;
+  n = c * (1.0 / std::sqrt(len2));
   return true;
 }
 }  // namespace
 
 FundamentalForms fundamental_forms(const SurfaceJet& s) {
-  Vec3 n(0);
-  normal_of(s, n);
+  Vec3 n(0), c;
+  double len2;
+  normal_of(s, n, c, len2);
   return {glm::dot(s.su, s.su), glm::dot(s.su, s.sv), glm::dot(s.sv, s.sv),
           glm::dot(s.suu, n),   glm::dot(s.suv, n),   glm::dot(s.svv, n)};
 }
 
 SurfaceGeometry differential_geometry(const SurfaceJet& s) {
   SurfaceGeometry g;
-  Vec3 n;
-  if (!normal_of(s, n)) return g;  // Singular, zeros
+  Vec3 n, c;
+  double det;                              // EG - F^2 = |Su x Sv|^2, computed directly for accuracy
+  if (!normal_of(s, n, c, det)) return g;  // Singular, zeros
   const double E = glm::dot(s.su, s.su), F = glm::dot(s.su, s.sv), G = glm::dot(s.sv, s.sv);
   const double L = glm::dot(s.suu, n), M = glm::dot(s.suv, n), N = glm::dot(s.svv, n);
-  // EG - F^2 = |Su x Sv|^2, computed directly for accuracy.
-  const Vec3 c = glm::cross(s.su, s.sv);
-  const double det = glm::dot(c, c);
   g.normal = n;
-  g.gaussian = (L * N - M * M) / det;
-  g.mean = (E * N - 2 * F * M + G * L) / (2 * det);
+  const double inv = 1.0 / det;
+  g.gaussian = (L * N - M * M) * inv;
+  g.mean = (E * N - 2 * F * M + G * L) * (0.5 * inv);
   const double disc = std::sqrt(std::max(0.0, g.mean * g.mean - g.gaussian));
   g.kmin = g.mean - disc;
   g.kmax = g.mean + disc;

@@ -8,12 +8,18 @@ namespace pl {
 namespace {
 const char* type_name(const nlohmann::json& j) {
   switch (j.type()) {
-    case nlohmann::json::value_t::null: return "null";
-    case nlohmann::json::value_t::object: return "an object";
-    case nlohmann::json::value_t::array: return "an array";
-    case nlohmann::json::value_t::string: return "a string";
-    case nlohmann::json::value_t::boolean: return "a boolean";
-    default: return "a number";
+    case nlohmann::json::value_t::null:
+      return "null";
+    case nlohmann::json::value_t::object:
+      return "an object";
+    case nlohmann::json::value_t::array:
+      return "an array";
+    case nlohmann::json::value_t::string:
+      return "a string";
+    case nlohmann::json::value_t::boolean:
+      return "a boolean";
+    default:
+      return "a number";
   }
 }
 }  // namespace
@@ -50,8 +56,8 @@ std::optional<JsonNode> JsonNode::find(const std::string& key) const {
 void JsonNode::allow_only(std::initializer_list<const char*> keys) const {
   require_object();
   for (auto it = value_->begin(); it != value_->end(); ++it) {
-    const bool known = std::any_of(keys.begin(), keys.end(),
-                                   [&](const char* k) { return it.key() == k; });
+    const bool known =
+        std::any_of(keys.begin(), keys.end(), [&](const char* k) { return it.key() == k; });
     if (!known) {
       std::string list;
       for (const char* k : keys) list += std::string(list.empty() ? "" : ", ") + k;
@@ -127,23 +133,33 @@ class PathTracker {
   bool on_event(int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
     using E = nlohmann::json::parse_event_t;
     switch (event) {
-      case E::object_start: frames_.push_back({false, 0, ""}); break;
-      case E::array_start: frames_.push_back({true, 0, ""}); break;
-      case E::key: frames_.back().key = parsed.get<std::string>(); break;
+      case E::object_start:
+        frames_.push_back({false, 0, ""});
+        break;
+      case E::array_start:
+        frames_.push_back({true, 0, ""});
+        break;
+      case E::key:
+        frames_.back().key = parsed.get<std::string>();
+        break;
       case E::object_end:
       case E::array_end:
         frames_.pop_back();
         advance();
         break;
-      case E::value: advance(); break;
+      case E::value:
+        advance();
+        break;
     }
     return true;
   }
   std::string path() const {
     std::string p;
     for (const Frame& f : frames_) {
-      if (f.array) p += "[" + std::to_string(f.index) + "]";
-      else if (!f.key.empty()) p += (p.empty() ? "" : ".") + f.key;
+      if (f.array)
+        p += "[" + std::to_string(f.index) + "]";
+      else if (!f.key.empty())
+        p += (p.empty() ? "" : ".") + f.key;
     }
     return p;
   }
@@ -173,8 +189,10 @@ nlohmann::json parse_json(const std::string& text, const std::string& source) {
     const std::size_t byte = std::min<std::size_t>(e.byte, text.size());
     std::size_t line = 1, col = 1;
     for (std::size_t i = 0; i + 1 < byte; ++i) {
-      if (text[i] == '\n') ++line, col = 1;
-      else ++col;
+      if (text[i] == '\n')
+        ++line, col = 1;
+      else
+        ++col;
     }
     std::string why = e.what();
     const auto pos = why.find("syntax error");

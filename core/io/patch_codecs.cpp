@@ -18,7 +18,9 @@ const PatchCodec* find_patch_codec(const std::string& type) {
   return nullptr;
 }
 
-nlohmann::json point_json(const Vec3& p) { return nlohmann::json::array({p.x, p.y, p.z}); }
+nlohmann::json point_json(const Vec3& p) {
+  return nlohmann::json::array({p.x, p.y, p.z});
+}
 
 nlohmann::json points_json(const std::vector<Vec3>& points) {
   nlohmann::json a = nlohmann::json::array();

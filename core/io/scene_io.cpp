@@ -59,7 +59,8 @@ Network read_network(const JsonNode& node) {
                  " vertices)");
         face.loop.push_back(static_cast<int>(idx));
       }
-      if (auto s = f.find("scheme")) face.scheme = read_scheme(*s, static_cast<int>(face.loop.size()));
+      if (auto s = f.find("scheme"))
+        face.scheme = read_scheme(*s, static_cast<int>(face.loop.size()));
       if (auto name = f.find("name")) face.name = name->string();
       net.faces.push_back(std::move(face));
     }
@@ -73,7 +74,8 @@ ScenePatch read_patch(const JsonNode& node) {
   const PatchCodec* codec = find_patch_codec(t);
   if (!codec) {
     std::string known;
-    for (const PatchCodec& c : patch_codecs()) known += std::string(known.empty() ? "" : ", ") + c.type;
+    for (const PatchCodec& c : patch_codecs())
+      known += std::string(known.empty() ? "" : ", ") + c.type;
     type.fail("unknown patch type \"" + t + "\" (known: " + known + ")");
   }
   ScenePatch sp;

@@ -33,11 +33,21 @@ struct Jet {
   bool is_zero() const { return f == 0 && fu == 0 && fv == 0 && fuu == 0 && fuv == 0 && fvv == 0; }
 };
 
-constexpr Jet operator-(const Jet& a) { return {-a.f, -a.fu, -a.fv, -a.fuu, -a.fuv, -a.fvv}; }
-constexpr Jet operator+(Jet a, const Jet& b) { return a += b; }
-constexpr Jet operator-(Jet a, const Jet& b) { return a -= b; }
-constexpr Jet operator*(Jet a, double s) { return a *= s; }
-constexpr Jet operator*(double s, Jet a) { return a *= s; }
+constexpr Jet operator-(const Jet& a) {
+  return {-a.f, -a.fu, -a.fv, -a.fuu, -a.fuv, -a.fvv};
+}
+constexpr Jet operator+(Jet a, const Jet& b) {
+  return a += b;
+}
+constexpr Jet operator-(Jet a, const Jet& b) {
+  return a -= b;
+}
+constexpr Jet operator*(Jet a, double s) {
+  return a *= s;
+}
+constexpr Jet operator*(double s, Jet a) {
+  return a *= s;
+}
 
 constexpr Jet operator*(const Jet& a, const Jet& b) {
   return {a.f * b.f,
@@ -62,9 +72,15 @@ inline Jet reciprocal(const Jet& a) {
   const double r = 1.0 / a.f;
   return chain(a, r, -r * r, 2 * r * r * r);
 }
-inline Jet operator/(const Jet& a, const Jet& b) { return a * reciprocal(b); }
-inline Jet operator/(const Jet& a, double s) { return a * (1.0 / s); }
-inline Jet operator/(double s, const Jet& b) { return s * reciprocal(b); }
+inline Jet operator/(const Jet& a, const Jet& b) {
+  return a * reciprocal(b);
+}
+inline Jet operator/(const Jet& a, double s) {
+  return a * (1.0 / s);
+}
+inline Jet operator/(double s, const Jet& b) {
+  return s * reciprocal(b);
+}
 inline Jet sqrt(const Jet& a) {
   const double r = std::sqrt(a.f);
   return chain(a, r, 0.5 / r, -0.25 / (r * a.f));

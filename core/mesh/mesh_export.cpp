@@ -6,6 +6,7 @@
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Core/System/omstream.hh>
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -94,20 +95,27 @@ void write_with_openmesh(const std::vector<SurfaceMesh>& meshes, const std::file
   OpenMesh::IO::Options opt;
   if (format == MeshFormat::Stl) opt += OpenMesh::IO::Options::Binary;
   // OpenMesh picks the writer from the extension, so give the temporary file the right one.
-  if (!OpenMesh::IO::write_mesh(mesh, tmp.string(), opt, 17))
-    throw DataError(tmp.string(), "", "OpenMesh could not write the mesh");
+  // Its writers chat on stdout ("write binary file"); a CLI's stdout is for results only.
+  omlog().disable();
+  omout().disable();
+  const bool written = OpenMesh::IO::write_mesh(mesh, tmp.string(), opt, 17);
+  omout().enable();
+  omlog().enable();
+  if (!written) throw DataError(tmp.string(), "", "OpenMesh could not write the mesh");
 }
 
 }  // namespace
 
 MeshFormat mesh_format_for(const std::filesystem::path& path) {
   std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   if (ext == ".obj") return MeshFormat::Obj;
   if (ext == ".ply") return MeshFormat::Ply;
   if (ext == ".off") return MeshFormat::Off;
   if (ext == ".stl") return MeshFormat::Stl;
-  throw DataError(path.string(), "", "unknown mesh format \"" + ext + "\" (use .obj, .ply, .off or .stl)");
+  throw DataError(path.string(), "",
+                  "unknown mesh format \"" + ext + "\" (use .obj, .ply, .off or .stl)");
 }
 
 void export_meshes(const std::vector<SurfaceMesh>& meshes, const std::filesystem::path& path) {
@@ -116,9 +124,12 @@ void export_meshes(const std::vector<SurfaceMesh>& meshes, const std::filesystem
     // Keep the extension on the temporary name (OpenMesh chooses its writer by it).
     const std::filesystem::path tmp = tmp_in.string() + path.extension().string();
     try {
-      if (format == MeshFormat::Obj) write_obj(meshes, tmp);
-      else if (format == MeshFormat::Ply) write_ply(meshes, tmp);
-      else write_with_openmesh(meshes, tmp, format);
+      if (format == MeshFormat::Obj)
+        write_obj(meshes, tmp);
+      else if (format == MeshFormat::Ply)
+        write_ply(meshes, tmp);
+      else
+        write_with_openmesh(meshes, tmp, format);
       std::filesystem::rename(tmp, tmp_in);
     } catch (...) {
       std::error_code ignore;

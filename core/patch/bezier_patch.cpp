@@ -22,9 +22,8 @@ BezierPatch::BezierPatch(int m, int n, std::vector<Vec3> points)
     throw std::invalid_argument("Bézier patch degrees must be between 1 and 30");
   if (points_.size() != static_cast<std::size_t>((m + 1) * (n + 1)))
     throw std::invalid_argument("a Bézier patch of degree [" + std::to_string(m) + ", " +
-                                std::to_string(n) + "] needs " +
-                                std::to_string((m + 1) * (n + 1)) + " points, got " +
-                                std::to_string(points_.size()));
+                                std::to_string(n) + "] needs " + std::to_string((m + 1) * (n + 1)) +
+                                " points, got " + std::to_string(points_.size()));
 }
 
 ControlPointKind BezierPatch::kind(std::size_t k) const {

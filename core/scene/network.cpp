@@ -31,8 +31,8 @@ NetworkTopology validate_network(const Network& net, const std::string& source) 
     for (int k = 0; k < 2; ++k)
       if (ed.v[k] < 0 || ed.v[k] >= nv)
         fail(path + "[" + std::to_string(k) + "]", "vertex " + std::to_string(ed.v[k]) +
-                                                        " does not exist (" + std::to_string(nv) +
-                                                        " vertices)");
+                                                       " does not exist (" + std::to_string(nv) +
+                                                       " vertices)");
     if (ed.v[0] == ed.v[1]) fail(path, "an edge must join two different vertices");
     const auto key = std::minmax(ed.v[0], ed.v[1]);
     if (auto [it, fresh] = edge_of.emplace(key, static_cast<int>(e)); !fresh)
@@ -50,8 +50,8 @@ NetworkTopology validate_network(const Network& net, const std::string& source) 
     for (int i = 0; i < n; ++i) {
       const std::string ipath = path + "[" + std::to_string(i) + "]";
       if (loop[i] < 0 || loop[i] >= nv)
-        fail(ipath, "vertex " + std::to_string(loop[i]) + " does not exist (" +
-                        std::to_string(nv) + " vertices)");
+        fail(ipath, "vertex " + std::to_string(loop[i]) + " does not exist (" + std::to_string(nv) +
+                        " vertices)");
       if (!seen.insert(loop[i]).second)
         fail(ipath, "vertex " + std::to_string(loop[i]) + " appears twice in the loop");
     }

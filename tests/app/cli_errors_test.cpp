@@ -21,7 +21,8 @@ struct BadCase {
 };
 
 std::vector<BadCase> bad_cases() {
-  const std::string bez = R"({"type":"bezier","degree":[1,1],"points":[[0,0,0],[0,1,0],[1,0,0],[1,1,0]]})";
+  const std::string bez =
+      R"({"type":"bezier","degree":[1,1],"points":[[0,0,0],[0,1,0],[1,0,0],[1,1,0]]})";
   return {
       {"syntax error", R"({"patchlab": 1,)", "line 1"},
       {"not an object", "[1,2]", "(top level)"},
@@ -30,9 +31,11 @@ std::vector<BadCase> bad_cases() {
       {"unknown top-level key", R"({"patchlab":1,"colour":3})", "colour: unknown key"},
       {"wrong type of name", R"({"patchlab":1,"name":5})", "name: expected a string"},
       {"unknown patch type", R"({"patchlab":1,"patches":[{"type":"teapot"}]})", "patches[0].type"},
-      {"wrong degree length", R"({"patchlab":1,"patches":[{"type":"bezier","degree":[1],"points":[]}]})",
+      {"wrong degree length",
+       R"({"patchlab":1,"patches":[{"type":"bezier","degree":[1],"points":[]}]})",
        "patches[0].degree"},
-      {"too few points", R"({"patchlab":1,"patches":[{"type":"bezier","degree":[1,1],"points":[[0,0,0]]}]})",
+      {"too few points",
+       R"({"patchlab":1,"patches":[{"type":"bezier","degree":[1,1],"points":[[0,0,0]]}]})",
        "patches[0].points"},
       {"point of length 2",
        R"({"patchlab":1,"patches":[{"type":"bezier","degree":[1,1],"points":[[0,0],[0,1,0],[1,0,0],[1,1,0]]}]})",
@@ -43,11 +46,14 @@ std::vector<BadCase> bad_cases() {
       {"non-finite number (overflow)",
        R"({"patchlab":1,"patches":[{"type":"bezier","degree":[1,1],"points":[[0,0,1e999],[0,1,0],[1,0,0],[1,1,0]]}]})",
        "patches[0].points[0][2]"},
-      {"negative degree", R"({"patchlab":1,"patches":[{"type":"bezier","degree":[-1,1],"points":[]}]})",
+      {"negative degree",
+       R"({"patchlab":1,"patches":[{"type":"bezier","degree":[-1,1],"points":[]}]})",
        "patches[0].degree[0]"},
-      {"fractional degree", R"({"patchlab":1,"patches":[{"type":"bezier","degree":[1.5,1],"points":[]}]})",
+      {"fractional degree",
+       R"({"patchlab":1,"patches":[{"type":"bezier","degree":[1.5,1],"points":[]}]})",
        "patches[0].degree[0]"},
-      {"unknown patch key", R"({"patchlab":1,"patches":[)" + bez.substr(0, bez.size() - 1) + R"(,"w":1}]})",
+      {"unknown patch key",
+       R"({"patchlab":1,"patches":[)" + bez.substr(0, bez.size() - 1) + R"(,"w":1}]})",
        "patches[0].w"},
       {"edge vertex out of range",
        R"({"patchlab":1,"network":{"vertices":[[0,0,0],[1,0,0]],"edges":[{"v":[0,5],"handles":[[0,0,0],[1,0,0]]}]}})",
@@ -73,10 +79,10 @@ std::vector<BadCase> bad_cases() {
       {"normals of wrong length",
        R"({"patchlab":1,"network":{"vertices":[[0,0,0],[1,0,0]],"normals":[[0,0,1]]}})",
        "network.normals"},
-      {"zero normal",
-       R"({"patchlab":1,"network":{"vertices":[[0,0,0]],"normals":[[0,0,0]]}})",
+      {"zero normal", R"({"patchlab":1,"network":{"vertices":[[0,0,0]],"normals":[[0,0,0]]}})",
        "network.normals[0]"},
-      {"same-direction shared edge", [] {
+      {"same-direction shared edge",
+       [] {
          std::string s = kGoodNetwork;
          // A second face over the same square in the same direction.
          s.replace(s.find("}]}}"), 4, "},{\"loop\":[0,1,2,3]}]}}");
@@ -133,7 +139,8 @@ TEST(CliErrors, FailedExportKeepsThePreviousFile) {
   EXPECT_EQ(cli({"export", bad.string(), "-o", out.string()}).code, kExitBadInput);
   EXPECT_EQ(slurp(out), "previous content\n");
   // Unwritable target directory: error, not a crash.
-  const auto good = dir.file("good.json",
+  const auto good = dir.file(
+      "good.json",
       R"({"patchlab":1,"patches":[{"type":"bezier","degree":[1,1],"points":[[0,0,0],[0,1,0],[1,0,0],[1,1,0]]}]})");
   const CliResult r = cli({"export", good.string(), "-o", (dir / "no/such/dir/x.obj").string()});
   EXPECT_EQ(r.code, kExitBadInput) << r.err;

@@ -107,8 +107,8 @@ TEST(Export, PlyCarriesCurvaturePropertiesMatchingTheClosedForm) {
   const auto col = [&](const std::string& name) {
     return std::find(props.begin(), props.end(), name) - props.begin();
   };
-  const auto cx = col("x"), cy = col("y"), cmean = col("mean_curvature"), cgauss = col("gaussian_curvature"),
-             cnz = col("nz");
+  const auto cx = col("x"), cy = col("y"), cmean = col("mean_curvature"),
+             cgauss = col("gaussian_curvature"), cnz = col("nz");
   ASSERT_LT(static_cast<std::size_t>(cmean), props.size()) << "no mean_curvature property";
   ASSERT_LT(static_cast<std::size_t>(cgauss), props.size()) << "no gaussian_curvature property";
   ASSERT_LT(static_cast<std::size_t>(cnz), props.size()) << "no normals";

@@ -32,7 +32,8 @@ std::vector<std::string> offending(const std::string& folder, const std::regex& 
 }
 
 TEST(Layering, CoreIncludesNoGraphicsUiRenderOrApp) {
-  const auto bad = offending("core", std::regex(R"(^(GL/|GLES|GLFW/|EGL/|KHR/|epoxy/|imgui|backends/|render/|app/))"));
+  const auto bad = offending(
+      "core", std::regex(R"(^(GL/|GLES|GLFW/|EGL/|KHR/|epoxy/|imgui|backends/|render/|app/))"));
   EXPECT_TRUE(bad.empty()) << bad.front();
 }
 

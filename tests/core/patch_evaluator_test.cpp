@@ -25,7 +25,8 @@ TEST(PatchEvaluator, HundredsOfRandomMovesEqualFullReevaluation) {
   std::uniform_real_distribution<double> step(-0.2, 0.2);
   for (int move = 0; move < 400; ++move) {
     const std::size_t k = pick(rng);
-    incremental.move_control_point(k, patch->control_point(k) + Vec3(step(rng), step(rng), step(rng)));
+    incremental.move_control_point(k,
+                                   patch->control_point(k) + Vec3(step(rng), step(rng), step(rng)));
   }
   EXPECT_LE(incremental.influence_bytes(),
             PatchEvaluator::kMaxColumns * tess->points.size() * sizeof(Jet));
@@ -50,8 +51,10 @@ TEST(PatchEvaluator, HundredsOfRandomMovesEqualFullReevaluation) {
   EXPECT_LT(worst_d, 1e-12);
   EXPECT_LT(worst_n, 1e-12);
   EXPECT_LT(worst_k, 1e-10);  // curvature divides by |Su x Sv|^2: conditioning, not drift
-  std::printf("max relative difference after 400 moves: position %.3g, derivatives %.3g, "
-              "normal %.3g, curvature %.3g\n", worst_p, worst_d, worst_n, worst_k);
+  std::printf(
+      "max relative difference after 400 moves: position %.3g, derivatives %.3g, "
+      "normal %.3g, curvature %.3g\n",
+      worst_p, worst_d, worst_n, worst_k);
 }
 
 TEST(PatchEvaluator, OnlyInfluencedSamplesChangeAndRevisionAdvances) {
@@ -72,8 +75,9 @@ TEST(PatchEvaluator, OnlyInfluencedSamplesChangeAndRevisionAdvances) {
 
 TEST(PatchEvaluator, SingularCornerGetsALimitNormalNotNaN) {
   // Side u = 0 collapses to a point (a triangle-like patch): Su x Sv = 0 along it.
-  auto patch = std::make_shared<BezierPatch>(1, 2, std::vector<Vec3>{
-      {0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {1, -1, 0.2}, {1, 0, 0.5}, {1, 1, 0.2}});
+  auto patch = std::make_shared<BezierPatch>(
+      1, 2,
+      std::vector<Vec3>{{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {1, -1, 0.2}, {1, 0, 0.5}, {1, 1, 0.2}});
   auto tess = std::make_shared<const Tessellation>(UnitSquareDomain().tessellate(6));
   PatchEvaluator ev(patch, tess);
   int singular = 0;

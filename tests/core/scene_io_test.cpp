@@ -46,8 +46,12 @@ TEST(SceneIo, SpecExampleReadsAndValidates) {
 
 TEST(SceneIo, RoundTripKeepsEveryDoubleBitForBit) {
   Scene s = parse_scene(kSpecExample, "example.json");
-  s.patches.push_back({"odd numbers", std::make_shared<BezierPatch>(1, 1, std::vector<Vec3>{
-      {0.1, 1.0 / 3, 2e-300}, {M_PI, -0.0, 1e300}, {5e-324, 7, 8}, {0.30000000000000004, 1, 1}})});
+  s.patches.push_back({"odd numbers", std::make_shared<BezierPatch>(
+                                          1, 1,
+                                          std::vector<Vec3>{{0.1, 1.0 / 3, 2e-300},
+                                                            {M_PI, -0.0, 1e300},
+                                                            {5e-324, 7, 8},
+                                                            {0.30000000000000004, 1, 1}})});
   s.view_json = R"({"camera":{"distance":3.5}})";
   const std::string once = scene_to_json(s);
   const Scene back = parse_scene(once, "again.json");
@@ -73,7 +77,8 @@ TEST(SceneIo, AtomicSaveLeavesOldFileWhenWritingFails) {
   const auto target = dir / "scene.json";
   write_file_atomically(target, "old\n");
   // The target's directory becomes read-only: the temporary file cannot be created.
-  std::filesystem::permissions(dir, std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
+  std::filesystem::permissions(
+      dir, std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
   bool threw = false;
   try {
     write_file_atomically(target, "new\n");
@@ -82,8 +87,10 @@ TEST(SceneIo, AtomicSaveLeavesOldFileWhenWritingFails) {
   }
   std::filesystem::permissions(dir, std::filesystem::perms::owner_all);
   // Root ignores directory permissions; then the write succeeds, which is also atomic.
-  if (threw) EXPECT_EQ(read_text_file(target), "old\n");
-  else EXPECT_EQ(read_text_file(target), "new\n");
+  if (threw)
+    EXPECT_EQ(read_text_file(target), "old\n");
+  else
+    EXPECT_EQ(read_text_file(target), "new\n");
   // No temporary files are left behind either way.
   int files = 0;
   for (auto& e : std::filesystem::directory_iterator(dir)) files += e.is_regular_file();

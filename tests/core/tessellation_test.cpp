@@ -56,7 +56,8 @@ TEST(Tessellation, PointCounts) {
 TEST(Tessellation, PolygonDomainRejectsNonConvexInput) {
   EXPECT_THROW(ConvexPolygonDomain({{0, 0}, {1, 0}}), std::invalid_argument);
   EXPECT_THROW(ConvexPolygonDomain({{0, 0}, {0, 1}, {1, 0}}), std::invalid_argument);  // clockwise
-  EXPECT_THROW(ConvexPolygonDomain({{0, 0}, {2, 0}, {1, 0.1}, {2, 2}, {0, 2}}), std::invalid_argument);
+  EXPECT_THROW(ConvexPolygonDomain({{0, 0}, {2, 0}, {1, 0.1}, {2, 2}, {0, 2}}),
+               std::invalid_argument);
 }
 
 }  // namespace
