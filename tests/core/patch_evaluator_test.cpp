@@ -50,7 +50,7 @@ TEST(PatchEvaluator, HundredsOfRandomMovesEqualFullReevaluation) {
   EXPECT_LT(worst_p, 1e-12);
   EXPECT_LT(worst_d, 1e-12);
   EXPECT_LT(worst_n, 1e-12);
-  EXPECT_LT(worst_k, 1e-10);  // curvature divides by |Su x Sv|^2: conditioning, not drift
+  EXPECT_LT(worst_k, 1e-12);
   std::printf(
       "max relative difference after 400 moves: position %.3g, derivatives %.3g, "
       "normal %.3g, curvature %.3g\n",
