@@ -1,0 +1,45 @@
+// Tensor-product B-spline patch of any degrees (p, q) and knot vectors:
+//   S = sum_ij N_{i,p}(u) N_{j,q}(v) P_ij,  P_ij = points[i*nv + j],
+// over [0,1]^2 mapped onto the knot ranges (spline_grid.hpp). influence() computes a control
+// point's column only where its support is, so drags touch (p+1)(q+1) spans of samples.
+#pragma once
+
+#include "core/domain/unit_square.hpp"
+#include "core/patch/patch.hpp"
+#include "core/patch/spline_grid.hpp"
+
+namespace pl {
+
+class BSplinePatch final : public Patch {
+ public:
+  // Throws std::invalid_argument for invalid knots or points.size() != nu * nv.
+  BSplinePatch(int p, int q, std::vector<double> knots_u, std::vector<double> knots_v,
+               std::size_t nu, std::size_t nv, std::vector<Vec3> points);
+
+  std::unique_ptr<Patch> clone() const override { return std::make_unique<BSplinePatch>(*this); }
+  std::string type() const override { return "bspline"; }
+  const Domain& domain() const override { return domain_; }
+  ControlPointKind kind(std::size_t k) const override;
+  void basis(Vec2 x, std::span<Jet> out) const override;
+  SurfaceJet evaluate(Vec2 x) const override;
+  void influence(std::size_t k, std::span<const Vec2> xs, std::span<Jet> out) const override;
+  // Exact when a side is one polynomial span (its Bézier form); a multi-span side is returned
+  // as one Bézier curve on its B-spline control polygon, which has the same end points but is
+  // not the side (the interface has no piecewise curve).
+  std::vector<BezierCurve> boundary_curves() const override;
+
+  const SplineGrid& grid() const { return grid_; }
+  // The same surface with knot t (in the knot range, not the domain) inserted in u or v.
+  BSplinePatch inserted_u(double t) const;
+  BSplinePatch inserted_v(double t) const;
+
+ private:
+  SplineGrid grid_;
+  UnitSquareDomain domain_;
+};
+
+// Side curves of a spline grid of (homogeneous, when weighted) points; shared with NURBS.
+std::vector<BezierCurve> spline_boundary_curves(const SplineGrid& g,
+                                                const std::vector<Vec3>& points);
+
+}  // namespace pl

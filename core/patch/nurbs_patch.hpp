@@ -1,0 +1,46 @@
+// NURBS patch with fixed weights: S = sum_ij N_i(u) N_j(v) w_ij P_ij / sum_ij N_i(u) N_j(v) w_ij.
+// The rational basis phi_ij = N_i N_j w_ij / W is a Jet quotient, so S stays linear in the
+// control points (incremental drags work as for every patch). Points and weights at i*nv + j.
+#pragma once
+
+#include "core/domain/unit_square.hpp"
+#include "core/patch/patch.hpp"
+#include "core/patch/spline_grid.hpp"
+
+namespace pl {
+
+class NurbsPatch final : public Patch {
+ public:
+  // Throws std::invalid_argument for invalid knots, counts, or non-positive weights.
+  NurbsPatch(int p, int q, std::vector<double> knots_u, std::vector<double> knots_v, std::size_t nu,
+             std::size_t nv, std::vector<Vec3> points, std::vector<double> weights);
+
+  // Exact sphere: u runs along a meridian half circle from the south to the north pole (5
+  // points), v around the axis z (9 points). The poles are degenerate (S_v = 0) rows.
+  static NurbsPatch sphere(Vec3 center, double radius);
+  // Exact cylinder about the z axis: u around (9 points), v along z from z0 to z1 (linear).
+  static NurbsPatch cylinder(Vec3 base_center, double radius, double height);
+
+  std::unique_ptr<Patch> clone() const override { return std::make_unique<NurbsPatch>(*this); }
+  std::string type() const override { return "nurbs"; }
+  const Domain& domain() const override { return domain_; }
+  ControlPointKind kind(std::size_t k) const override;
+  void basis(Vec2 x, std::span<Jet> out) const override;
+  SurfaceJet evaluate(Vec2 x) const override;
+  void influence(std::size_t k, std::span<const Vec2> xs, std::span<Jet> out) const override;
+  // Exact for single-span sides with equal weights (polynomial); otherwise the side's control
+  // polygon as a Bézier curve (same end points for clamped knots): the interface has no
+  // rational or piecewise curve.
+  std::vector<BezierCurve> boundary_curves() const override;
+
+  const SplineGrid& grid() const { return grid_; }
+  const std::vector<double>& weights() const { return weights_; }
+  NurbsPatch inserted_u(double t) const;  // same surface, knot t inserted (homogeneous Boehm)
+
+ private:
+  SplineGrid grid_;
+  std::vector<double> weights_;
+  UnitSquareDomain domain_;
+};
+
+}  // namespace pl
