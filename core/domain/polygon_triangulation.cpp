@@ -1,0 +1,208 @@
+#include "core/domain/polygon_triangulation.hpp"
+
+#include <stdexcept>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace pl {
+
+namespace {
+
+double orient(Vec2 a, Vec2 b, Vec2 c) {
+  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+// > 0 when d lies inside the circumcircle of the counter-clockwise triangle abc.
+double incircle(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const double adx = a.x - d.x, ady = a.y - d.y, bdx = b.x - d.x, bdy = b.y - d.y;
+  const double cdx = c.x - d.x, cdy = c.y - d.y;
+  const double ad = adx * adx + ady * ady, bd = bdx * bdx + bdy * bdy, cd = cdx * cdx + cdy * cdy;
+  return adx * (bdy * cd - bd * cdy) - ady * (bdx * cd - bd * cdx) + ad * (bdx * cdy - bdy * cdx);
+}
+
+uint64_t key(uint32_t a, uint32_t b) {
+  return (uint64_t(a) << 32) | b;
+}
+
+// Triangles with a directed-edge index, so the neighbour across an edge is one lookup.
+class Mesh {
+ public:
+  explicit Mesh(std::span<const Vec2> p) : p_(p) {}
+
+  void add(uint32_t a, uint32_t b, uint32_t c) {
+    tris_.push_back({a, b, c});
+    link(static_cast<uint32_t>(tris_.size() - 1));
+  }
+  void replace(uint32_t t, uint32_t a, uint32_t b, uint32_t c) {
+    unlink(t);
+    tris_[t] = {a, b, c};
+    link(t);
+  }
+  // The triangle holding the directed edge a->b, or -1.
+  long find(uint32_t a, uint32_t b) const {
+    const auto it = edges_.find(key(a, b));
+    return it == edges_.end() ? -1 : long(it->second);
+  }
+  uint32_t third(uint32_t t, uint32_t a, uint32_t b) const {
+    for (uint32_t v : tris_[t])
+      if (v != a && v != b) return v;
+    return a;
+  }
+  void constrain(uint32_t a, uint32_t b) { fixed_.insert(key(std::min(a, b), std::max(a, b))); }
+  void release(uint32_t a, uint32_t b) { fixed_.erase(key(std::min(a, b), std::max(a, b))); }
+  bool is_fixed(uint32_t a, uint32_t b) const {
+    return fixed_.count(key(std::min(a, b), std::max(a, b))) != 0;
+  }
+
+  // Lawson flips around the new point p: (a, b) is an edge of the triangle (a, b, p).
+  void legalize(uint32_t a, uint32_t b, uint32_t p) {
+    std::vector<std::array<uint32_t, 2>> stack{{a, b}};
+    while (!stack.empty()) {
+      const auto [x, y] = stack.back();
+      stack.pop_back();
+      if (is_fixed(x, y)) continue;
+      const long u = find(y, x), t = find(x, y);
+      if (u < 0 || t < 0) continue;
+      const uint32_t q = third(uint32_t(u), y, x);
+      if (!(incircle(p_[x], p_[y], p_[p], p_[q]) > 0)) continue;
+      // The flip must keep both triangles positive (a convex quadrilateral).
+      if (!(orient(p_[x], p_[q], p_[p]) > 0 && orient(p_[q], p_[y], p_[p]) > 0)) continue;
+      // Both triangles leave the edge index before either returns: the new (x, q, p) reuses
+      // the directed edge x->q of the old (y, x, q).
+      unlink(uint32_t(t));
+      unlink(uint32_t(u));
+      tris_[t] = {x, q, p};
+      tris_[u] = {q, y, p};
+      link(uint32_t(t));
+      link(uint32_t(u));
+      stack.push_back({x, q});
+      stack.push_back({q, y});
+    }
+  }
+
+  // Splits the triangle on the directed edge a->b at p (which lies on that edge).
+  void split_edge(uint32_t a, uint32_t b, uint32_t p) {
+    const long t = find(a, b);
+    if (t < 0) throw std::invalid_argument("polygon triangulation lost a boundary edge");
+    const uint32_t c = third(uint32_t(t), a, b);
+    replace(uint32_t(t), a, p, c);
+    add(p, b, c);
+    release(a, b);
+    constrain(a, p);
+    constrain(p, b);
+    legalize(b, c, p);
+    legalize(c, a, p);
+  }
+
+  // Inserts an interior point; returns false if it lies on an edge or outside every triangle.
+  bool insert(uint32_t p) {
+    for (uint32_t t = 0; t < tris_.size(); ++t) {
+      const auto [a, b, c] = tris_[t];
+      const double o1 = orient(p_[a], p_[b], p_[p]), o2 = orient(p_[b], p_[c], p_[p]);
+      const double o3 = orient(p_[c], p_[a], p_[p]);
+      if (o1 < 0 || o2 < 0 || o3 < 0) continue;
+      if (o1 == 0 || o2 == 0 || o3 == 0) return false;
+      replace(t, a, b, p);
+      add(b, c, p);
+      add(c, a, p);
+      legalize(a, b, p);
+      legalize(b, c, p);
+      legalize(c, a, p);
+      return true;
+    }
+    return false;
+  }
+
+  const std::vector<std::array<uint32_t, 3>>& triangles() const { return tris_; }
+
+ private:
+  void link(uint32_t t) {
+    const auto& v = tris_[t];
+    for (int i = 0; i < 3; ++i) edges_[key(v[i], v[(i + 1) % 3])] = t;
+  }
+  void unlink(uint32_t t) {
+    const auto& v = tris_[t];
+    for (int i = 0; i < 3; ++i) edges_.erase(key(v[i], v[(i + 1) % 3]));
+  }
+
+  std::span<const Vec2> p_;
+  std::vector<std::array<uint32_t, 3>> tris_;
+  std::unordered_map<uint64_t, uint32_t> edges_;
+  std::unordered_set<uint64_t> fixed_;
+};
+
+// Ear clipping of the polygon's corners (the points whose turn is not straight).
+void clip_ears(std::span<const Vec2> p, std::vector<uint32_t> poly, Mesh& mesh) {
+  while (poly.size() > 3) {
+    const std::size_t n = poly.size();
+    bool clipped = false;
+    for (std::size_t i = 0; i < n && !clipped; ++i) {
+      const uint32_t a = poly[(i + n - 1) % n], b = poly[i], c = poly[(i + 1) % n];
+      if (!(orient(p[a], p[b], p[c]) > 0)) continue;
+      bool blocked = false;
+      for (uint32_t q : poly) {
+        if (q == a || q == b || q == c) continue;
+        if (orient(p[a], p[b], p[q]) >= 0 && orient(p[b], p[c], p[q]) >= 0 &&
+            orient(p[c], p[a], p[q]) >= 0) {
+          blocked = true;
+          break;
+        }
+      }
+      if (blocked) continue;
+      mesh.add(a, b, c);
+      poly.erase(poly.begin() + static_cast<long>(i));
+      clipped = true;
+    }
+    if (!clipped) throw std::invalid_argument("polygon has no ear: it is not simple");
+  }
+  if (!(orient(p[poly[0]], p[poly[1]], p[poly[2]]) > 0))
+    throw std::invalid_argument("polygon has no ear: it is not simple");
+  mesh.add(poly[0], poly[1], poly[2]);
+}
+
+}  // namespace
+
+std::vector<std::array<uint32_t, 3>> triangulate_polygon(std::span<const Vec2> points,
+                                                         std::size_t boundary_count,
+                                                         std::vector<bool>* used) {
+  const std::size_t m = boundary_count;
+  if (m < 3) throw std::invalid_argument("a polygon needs at least 3 points");
+  // Corners first (ear clipping + Delaunay flips), then the straight-angle boundary points
+  // split their boundary edges, then interior points: each step keeps the triangulation
+  // constrained-Delaunay.
+  std::vector<uint32_t> corners;
+  for (std::size_t i = 0; i < m; ++i)
+    if (orient(points[(i + m - 1) % m], points[i], points[(i + 1) % m]) != 0)
+      corners.push_back(static_cast<uint32_t>(i));
+  Mesh mesh(points);
+  clip_ears(points, corners, mesh);
+  const std::size_t nc = corners.size();
+  for (std::size_t c = 0; c < nc; ++c) mesh.constrain(corners[c], corners[(c + 1) % nc]);
+  // Flip the ear-clipping diagonals to Delaunay: re-legalising each triangle's edges against
+  // its third vertex until nothing changes.
+  // Bounded: with cocircular corners rounding could otherwise flip one diagonal back and forth.
+  for (int pass = 0, changed = 1; changed && pass < 64; ++pass) {
+    const auto before = mesh.triangles();
+    for (std::size_t t = 0; t < before.size(); ++t) {
+      const auto [a, b, c] = mesh.triangles()[t];
+      mesh.legalize(a, b, c);
+    }
+    changed = before != mesh.triangles();
+  }
+  std::vector<bool> in(points.size(), false);
+  for (uint32_t c : corners) in[c] = true;
+  for (std::size_t c = 0; c < nc; ++c) {
+    const uint32_t a = corners[c], b = corners[(c + 1) % nc];
+    uint32_t prev = a;
+    for (uint32_t q = (a + 1) % m; q != b; q = (q + 1) % m) {
+      mesh.split_edge(prev, b, q);
+      in[q] = true;
+      prev = q;
+    }
+  }
+  for (std::size_t q = m; q < points.size(); ++q) in[q] = mesh.insert(static_cast<uint32_t>(q));
+  if (used) *used = in;
+  return mesh.triangles();
+}
+
+}  // namespace pl

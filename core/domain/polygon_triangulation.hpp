@@ -1,0 +1,23 @@
+// Constrained Delaunay triangulation of a simple polygon with extra interior points: the
+// boundary edges are kept, every other edge is locally Delaunay (well-shaped triangles).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "core/math/vec.hpp"
+
+namespace pl {
+
+// points[0 .. boundary_count) is the polygon, counter-clockwise, simple (collinear consecutive
+// points allowed); the remaining points lie strictly inside it. Returns counter-clockwise
+// triangles covering the polygon exactly once. Interior points that fall exactly on an existing
+// edge are skipped (they would make zero-area triangles); `used` (if given) reports which points
+// are referenced. Throws std::invalid_argument if the polygon cannot be ear-clipped.
+std::vector<std::array<uint32_t, 3>> triangulate_polygon(std::span<const Vec2> points,
+                                                         std::size_t boundary_count,
+                                                         std::vector<bool>* used = nullptr);
+
+}  // namespace pl

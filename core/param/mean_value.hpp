@@ -1,0 +1,25 @@
+// Mean value coordinates (Floater 2003; Hormann & Floater 2006 for arbitrary simple polygons)
+// with exact first and second derivatives.
+//
+// Why these for concave GB domains: Wachspress coordinates have poles over concave polygons;
+// the SMI 2018 concave GB paper uses harmonic coordinates, which have no closed form (the
+// authors solve a discrete Laplace problem on a bitmap), hence no exact derivatives. Mean value
+// coordinates are closed-form, C-infinity inside any simple polygon, linear along the sides and
+// Lagrange at the vertices; they may turn negative behind reflex vertices, which the GB ribbon
+// patch checks for (see gb_ribbon_patch.hpp).
+#pragma once
+
+#include <span>
+
+#include "core/math/jet.hpp"
+#include "core/math/vec.hpp"
+
+namespace pl {
+
+// lambda_i (out[i], one per polygon vertex) at x for a simple polygon (either orientation).
+// x must not be a vertex; on a side (and near it) the weights are rescaled by that side's
+// signed area so the usual 1/0 at the boundary never occurs and the derivatives there are the
+// one-sided limits from the interior.
+void mean_value_coordinates(std::span<const Vec2> polygon, Vec2 x, std::span<Jet> out);
+
+}  // namespace pl
