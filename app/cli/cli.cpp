@@ -14,6 +14,7 @@ std::span<const Command> commands() {
       Command{"export", "FILE -o OUT.{obj,ply,off,stl} [--density N] [--scheme gregory|gb]",
               run_export},
       Command{"analyze", "FILE [--density N] [--scheme gregory|gb] [--json]", run_analyze},
+      Command{"convert", "IN -o OUT  (.gbp <-> .json scene)", run_convert},
   };
   return table;
 }

@@ -2,6 +2,7 @@
 
 #include "app/cli/arguments.hpp"
 #include "core/io/data_error.hpp"
+#include "core/io/gbp_io.hpp"
 #include "core/io/scene_io.hpp"
 
 namespace pl {
@@ -9,7 +10,12 @@ namespace pl {
 Scene load_input(const std::filesystem::path& path) {
   const std::string ext = path.extension().string();
   if (ext == ".json") return read_scene(path);
-  throw DataError(path.string(), "", "unknown file type \"" + ext + "\" (expected .json)");
+  if (ext == ".gbp") {  // a scene with the one explicit GB patch of the file
+    Scene scene;
+    scene.patches.push_back({"", std::make_shared<GBPatch>(read_gbp(path))});
+    return scene;
+  }
+  throw DataError(path.string(), "", "unknown file type \"" + ext + "\" (expected .json or .gbp)");
 }
 
 std::optional<FaceScheme> parse_scheme_option(const std::optional<std::string>& value) {

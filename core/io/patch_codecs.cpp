@@ -1,6 +1,7 @@
 #include <array>
 
 #include "core/io/bezier_patch_codec.hpp"
+#include "core/io/gb_patch_codec.hpp"
 #include "core/io/patch_codec.hpp"
 
 namespace pl {
@@ -8,6 +9,7 @@ namespace pl {
 std::span<const PatchCodec> patch_codecs() {
   static const std::array codecs{
       PatchCodec{"bezier", read_bezier_patch, write_bezier_patch},
+      PatchCodec{"gb", read_gb_patch, write_gb_patch},
   };
   return codecs;
 }

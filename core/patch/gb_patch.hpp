@@ -1,0 +1,85 @@
+// Convex Generalized Bézier (GB) patch (Várady, Salvi, Karikó 2016), with the conventions of the
+// transfinite library and ../shared/reference/gb/README.md:
+//   S(x) = sum_i sum_{j=0..d} sum_{k<l} mu^i_{j,k} B^d_j(s_i) B^d_k(h_i) P^i_{j,k} + B_0(x) C_0,
+// over the regular n-gon (ConvexPolygonDomain::regular), l = ceil(d/2) layers per ribbon.
+//   mu: alpha_i = h_{i-1}/(h_{i-1}+h_i) for j < 2, beta_i = h_{i+1}/(h_{i+1}+h_i) for j > d-2
+//   (rows k < 2 only), 1/2 on the diagonals j = k and j = d-k, 0 beyond them, 1 elsewhere;
+//   the central point C_0 takes the deficiency B_0 = 1 - sum of all other weights.
+// Degree 1 and 2 (the quadratic variant): the alpha/beta rule is not applied, because the 2x2
+// corner blocks of one side overlap and would give the middle boundary point a rational weight
+// (README "Degree caveat"). The diagonal rule then gives each corner point 1/2 from both ribbons,
+// which interpolates the boundary for every n (on side i the neighbour's corner term equals
+// B^d_d(s_i) exactly) and reproduces the biquadratic tensor-product patch for n = 4.
+//
+// Control points are stored once, in .gbp order: C_0, then for k = 0..l-1, i = 0..n-1,
+// j = k..d-1-k the point P^i_{j,k}; the other entries of a ribbon's grid are the shared corner
+// block points of the neighbouring sides.
+//
+// Singular points: the corner weights alpha, beta are 0/0 at the domain vertices. There the value
+// is the corner control point and the derivatives are limits taken along the ray to the centre
+// (first derivatives do not depend on the direction; second derivatives in general do).
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "core/domain/convex_polygon.hpp"
+#include "core/param/polygon_parameters.hpp"
+#include "core/patch/patch.hpp"
+
+namespace pl {
+
+class GBPatch final : public Patch {
+ public:
+  static constexpr int kMaxSides = PolygonParameters::kMaxSides;
+  static constexpr int kMaxDegree = 20;
+
+  // Throws std::invalid_argument for n outside 3..16, d outside 1..20 or a wrong point count.
+  GBPatch(int sides, int degree, std::vector<Vec3> points);
+
+  static int layers(int degree) { return (degree + 1) / 2; }
+  static std::size_t point_count(int sides, int degree);
+
+  std::unique_ptr<Patch> clone() const override { return std::make_unique<GBPatch>(*this); }
+  std::string type() const override { return "gb"; }
+  const Domain& domain() const override { return domain_; }
+  ControlPointKind kind(std::size_t k) const override;
+  void basis(Vec2 x, std::span<Jet> out) const override;
+  SurfaceJet evaluate(Vec2 x) const override;
+  void influence(std::size_t k, std::span<const Vec2> xs, std::span<Jet> out) const override;
+  // Side i: the layer-0 row P^i_{0..d,0}, from vertex i-1 to vertex i.
+  std::vector<BezierCurve> boundary_curves() const override;
+
+  int sides() const { return n_; }
+  int degree() const { return d_; }
+  int layers() const { return l_; }
+  const ConvexPolygonDomain& polygon() const { return domain_; }
+  // Stored index of P^i_{j,k} for any j in 0..d, k in 0..l-1 (i taken modulo n).
+  std::size_t index(int i, int j, int k) const;
+  const Vec3& point(int i, int j, int k) const { return points_[index(i, j, k)]; }
+
+  enum class Mu : uint8_t { Zero, Half, One, Alpha, Beta };
+  // The weight rule of grid position (j, k); the same for every ribbon.
+  Mu mu(int j, int k) const { return mu_[k * (d_ + 1) + j]; }
+
+ private:
+  struct Local;  // per-point parameters, shared by evaluate, basis and influence
+  void local(Vec2 x, Local& out) const;
+  SurfaceJet evaluate_regular(Vec2 x) const;
+  void basis_regular(Vec2 x, std::span<Jet> out) const;
+  Jet influence_regular(std::size_t k, Vec2 x) const;
+  int vertex_at(Vec2 x) const;  // index of the domain vertex x sits on, or -1
+
+  int n_, d_, l_;
+  ConvexPolygonDomain domain_;
+  PolygonParameters params_;
+  std::vector<Mu> mu_;          // [k * (d+1) + j]
+  std::vector<uint32_t> grid_;  // [(i * l + k) * (d+1) + j] -> stored index
+  // Where each stored point appears in the ribbon grids: (i, j, k) with a non-zero mu.
+  struct Occurrence {
+    int i, j, k;
+  };
+  std::vector<std::vector<Occurrence>> occurrences_;
+};
+
+}  // namespace pl
