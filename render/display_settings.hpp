@@ -1,0 +1,50 @@
+// What to draw: one base mode plus overlays, and the parameters of each. Parsed from the CLI's
+// "--mode mean+isophotes+control-net" syntax; the editor will set the same struct from its UI.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "core/math/vec.hpp"
+#include "render/color_map.hpp"
+
+namespace pl {
+
+enum class BaseMode { Shaded, Isophotes, Zebra, Curvature };
+
+struct DisplaySettings {
+  BaseMode base = BaseMode::Shaded;
+  CurvatureKind curvature = CurvatureKind::Mean;  // for BaseMode::Curvature
+
+  // Overlays, combinable with any base mode.
+  bool isophote_lines = false;  // implied by BaseMode::Isophotes
+  bool control_net = false;
+  bool network_curves = false;
+  bool borders = false;  // patch boundaries
+
+  // Isophotes: lines where the angle between the normal and a light direction fixed in the model
+  // is a multiple of 180 deg / count.
+  int isophote_count = 18;
+  double isophote_width_px = 1.6;
+  Vec3 isophote_direction{0.3, -0.5, 0.81};  // model space; need not be unit
+
+  // Zebra: `count` dark stripes over the reflected half-sphere; width is the dark fraction.
+  int zebra_count = 14;
+  double zebra_width = 0.5;
+
+  // Curvature: the range of the colour map (nullopt: automatic with percentile clipping) and
+  // whether the colours are lit. Unlit ("flat") output is exactly the colour map.
+  std::optional<ColorRange> range;
+  double range_percentile = 98.0;
+  bool curvature_lighting = true;
+
+  bool transparent = false;  // clear to alpha 0 instead of the studio backdrop
+};
+
+// Parses "shaded", "isophotes", "zebra", "mean", "gaussian", "kmax", "kmin", "control-net",
+// "network", "borders", combined with '+'. At most one of shaded/zebra/curvature is the base;
+// "isophotes" is the base when alone and an overlay otherwise. Throws std::invalid_argument with
+// a message naming the offending token.
+DisplaySettings parse_display_mode(const std::string& mode);
+
+}  // namespace pl

@@ -1,0 +1,35 @@
+// Everything the renderer draws, as plain arrays (architecture: "the renderer eats plain
+// arrays"): tessellated surfaces with exact normals and curvatures, the control net with the kind
+// of every point, and polylines for network curves and patch borders. The app builds it from a
+// scene; the renderer never sees patch classes.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "core/mesh/surface_mesh.hpp"
+#include "core/patch/patch.hpp"  // ControlPointKind only
+#include "render/camera.hpp"
+
+namespace pl {
+
+struct ControlNet {
+  std::vector<Vec3> points;
+  std::vector<ControlPointKind> kinds;            // one per point
+  std::vector<std::array<uint32_t, 2>> segments;  // indices into points
+};
+
+using Polyline = std::vector<Vec3>;
+
+struct DrawScene {
+  std::vector<SurfaceMesh> surfaces;
+  ControlNet net;
+  std::vector<Polyline> network_curves;
+  std::vector<Polyline> borders;
+
+  // Of the surfaces, net and curves: what a camera frames.
+  Box bounds() const;
+};
+
+}  // namespace pl

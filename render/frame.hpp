@@ -1,0 +1,33 @@
+// One finished picture: panels side by side (one, or two for --compare), each a scene seen by
+// the same camera with the same settings and colour range, rendered in tiles no larger than the
+// driver allows, then labels and the curvature legend burned in. Needs a current context.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "render/image.hpp"
+#include "render/scene_renderer.hpp"
+
+namespace pl {
+
+struct FramePanel {
+  const GpuScene* scene = nullptr;
+  std::string label;  // drawn top-left of the panel when non-empty
+};
+
+struct FrameRequest {
+  int width = 1600, height = 1200;
+  std::vector<FramePanel> panels;
+  Camera camera;  // framed for one panel's aspect (see panel_aspect)
+  DisplaySettings settings;
+  ColorRange range;
+  int tile_size = 2048;  // further limited by the driver's maximum
+};
+
+// Width / height of each of `count` side-by-side panels.
+double panel_aspect(int width, int height, int count);
+
+Image render_frame(const SceneRenderer& renderer, const FrameRequest& request);
+
+}  // namespace pl

@@ -1,0 +1,67 @@
+// A DrawScene uploaded to the GPU. Surface attributes are converted from the core's doubles to
+// floats once per upload; a surface whose revision is unchanged is not uploaded again, and a
+// changed one with the same topology is updated in place (the drag path).
+#pragma once
+
+#include <vector>
+
+#include "render/draw_scene.hpp"
+#include "render/gl_objects.hpp"
+
+namespace pl {
+
+class GpuSurface {
+ public:
+  explicit GpuSurface(const SurfaceMesh& mesh);
+  // Re-uploads positions, normals and curvatures (same vertex count: glBufferSubData) or
+  // everything (topology changed).
+  void update(const SurfaceMesh& mesh);
+  void draw() const;
+  uint64_t revision() const { return revision_; }
+
+ private:
+  void upload_attributes(const SurfaceMesh& mesh, bool reallocate);
+  gl::VertexArray vao_;
+  gl::Buffer positions_, normals_, curvatures_, indices_;
+  std::size_t vertex_count_ = 0;
+  GLsizei index_count_ = 0;
+  uint64_t revision_ = 0;
+  std::vector<float> scratch_;  // reused conversion buffer: no allocation per drag update
+};
+
+// Line segments (GL_LINES pairs) or points with a per-vertex float tag (the point kind).
+class GpuPrimitives {
+ public:
+  GpuPrimitives();
+  void set(const std::vector<Vec3>& vertices, const std::vector<float>& tags);
+  void draw(GLenum mode) const;
+  bool empty() const { return count_ == 0; }
+
+ private:
+  gl::VertexArray vao_;
+  gl::Buffer positions_, tags_;
+  GLsizei count_ = 0;
+};
+
+class GpuScene {
+ public:
+  GpuScene() = default;
+  explicit GpuScene(const DrawScene& scene) { update(scene); }
+  // Uploads what changed since the last call (surfaces by revision; overlays always, they are
+  // small).
+  void update(const DrawScene& scene);
+  // The drag path: re-uploads one surface's attributes.
+  void update_surface(std::size_t i, const SurfaceMesh& mesh) { surfaces_.at(i).update(mesh); }
+
+  const std::vector<GpuSurface>& surfaces() const { return surfaces_; }
+  const GpuPrimitives& net_lines() const { return net_lines_; }
+  const GpuPrimitives& net_points() const { return net_points_; }
+  const GpuPrimitives& network_curves() const { return curves_; }
+  const GpuPrimitives& borders() const { return borders_; }
+
+ private:
+  std::vector<GpuSurface> surfaces_;
+  GpuPrimitives net_lines_, net_points_, curves_, borders_;
+};
+
+}  // namespace pl

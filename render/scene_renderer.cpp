@@ -1,0 +1,140 @@
+#include "render/scene_renderer.hpp"
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace pl {
+
+namespace {
+
+constexpr int kColorMapEntries = 1024;
+// Pulls overlay lines in front of the triangles they lie on; the triangles are chords of the
+// curved surface, so a line sampled on the exact surface can sit slightly behind them.
+constexpr float kOverlayDepthBias = 4e-4f;
+// How visible hidden parts of the control net are: enough to read the structure behind the
+// surface, faint enough not to be confused with the visible part.
+constexpr float kHiddenAlpha = 0.22f;
+
+void set(GLint loc, const Vec3& v) {
+  glUniform3f(loc, static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z));
+}
+
+}  // namespace
+
+SceneRenderer::SceneRenderer()
+    : surface_("surface.vert.glsl", "", "surface.frag.glsl"),
+      lines_("line.vert.glsl", "line.geom.glsl", "line.frag.glsl"),
+      points_("line.vert.glsl", "point.geom.glsl", "point.frag.glsl"),
+      backdrop_("backdrop.vert.glsl", "", "backdrop.frag.glsl") {
+  const std::vector<float> table = color_map_table(kColorMapEntries);
+  glBindTexture(GL_TEXTURE_2D, color_map_.id());
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, kColorMapEntries, 1, 0, GL_RGB, GL_FLOAT, table.data());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  gl::check_error("SceneRenderer setup");
+}
+
+void SceneRenderer::draw(const GpuScene& scene, const Camera& camera,
+                         const DisplaySettings& settings, const ColorRange& range,
+                         const Viewport& v) const {
+  glViewport(v.x, v.y, v.width, v.height);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+
+  if (!settings.transparent) {
+    backdrop_.use();
+    glUniform4f(backdrop_.uniform("u_viewport"), float(v.x), float(v.y), float(v.width),
+                float(v.height));
+    glDepthMask(GL_FALSE);
+    glBindVertexArray(empty_vao_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDepthMask(GL_TRUE);
+  }
+
+  const double aspect = double(v.width) / double(v.height);
+  const glm::mat4 vp(camera.projection(aspect) * camera.view());
+  // Studio lights fixed to the camera: key from the upper left, fill from the lower right.
+  const Vec3 f = camera.forward(), u = camera.up(), r = camera.right();
+  const Vec3 key = glm::normalize(-0.55 * f + 0.60 * u - 0.50 * r);
+  const Vec3 fill = glm::normalize(-0.70 * f - 0.30 * u + 0.65 * r);
+
+  surface_.use();
+  glUniformMatrix4fv(surface_.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
+  glUniform1i(surface_.uniform("u_base"), static_cast<int>(settings.base));
+  glUniform1i(surface_.uniform("u_curvature_index"), static_cast<int>(settings.curvature));
+  set(surface_.uniform("u_eye"), camera.eye());
+  set(surface_.uniform("u_key_light"), key);
+  set(surface_.uniform("u_fill_light"), fill);
+  set(surface_.uniform("u_camera_up"), u);
+  glUniform1i(surface_.uniform("u_isophote_lines"), settings.isophote_lines ? 1 : 0);
+  set(surface_.uniform("u_isophote_direction"), glm::normalize(settings.isophote_direction));
+  glUniform1f(surface_.uniform("u_isophote_count"), float(settings.isophote_count));
+  glUniform1f(surface_.uniform("u_isophote_width"),
+              float(settings.isophote_width_px * v.pixel_scale));
+  glUniform1f(surface_.uniform("u_zebra_count"), float(settings.zebra_count));
+  glUniform1f(surface_.uniform("u_zebra_width"), float(settings.zebra_width));
+  glUniform1f(surface_.uniform("u_range_lo"), float(range.lo));
+  glUniform1f(surface_.uniform("u_range_hi"), float(range.hi));
+  glUniform1i(surface_.uniform("u_curvature_lit"), settings.curvature_lighting ? 1 : 0);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, color_map_.id());
+  glUniform1i(surface_.uniform("u_color_map"), 0);
+  for (const GpuSurface& s : scene.surfaces()) s.draw();
+
+  glEnable(GL_BLEND);
+  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  const float s = static_cast<float>(v.pixel_scale);
+  if (settings.borders)
+    draw_lines(scene.borders(), vp, v, {0.12f, 0.13f, 0.16f, 0.85f}, 1.4f * s, false);
+  if (settings.network_curves)
+    draw_lines(scene.network_curves(), vp, v, {0.05f, 0.30f, 0.62f, 1.0f}, 2.6f * s, false);
+  if (settings.control_net) {
+    draw_lines(scene.net_lines(), vp, v, {0.20f, 0.22f, 0.26f, 0.9f}, 1.3f * s, true);
+    points_.use();
+    glUniformMatrix4fv(points_.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
+    glUniform2f(points_.uniform("u_viewport_size"), float(v.width), float(v.height));
+    glUniform1f(points_.uniform("u_size"), 9.0f * s);
+    glUniform1f(points_.uniform("u_depth_bias"), kOverlayDepthBias * 4);
+    // Boundary, Inner, Twin, Central: the core's ControlPointKind order.
+    const float kinds[12] = {0.95f, 0.62f, 0.10f, 0.20f, 0.55f, 0.95f,
+                             0.85f, 0.25f, 0.75f, 0.20f, 0.75f, 0.35f};
+    glUniform3fv(points_.uniform("u_kind_colors"), 4, kinds);
+    // Hidden points first, faint; then the visible ones on top.
+    glDepthFunc(GL_GREATER);
+    glDepthMask(GL_FALSE);
+    glUniform1f(points_.uniform("u_alpha"), kHiddenAlpha);
+    scene.net_points().draw(GL_POINTS);
+    glDepthFunc(GL_LEQUAL);
+    glUniform1f(points_.uniform("u_alpha"), 1.0f);
+    scene.net_points().draw(GL_POINTS);
+    glDepthMask(GL_TRUE);
+  }
+  glDisable(GL_BLEND);
+  glBindVertexArray(0);
+  gl::check_error("SceneRenderer::draw");
+}
+
+void SceneRenderer::draw_lines(const GpuPrimitives& lines, const glm::mat4& vp, const Viewport& v,
+                               const float (&color)[4], float width, bool show_hidden) const {
+  if (lines.empty()) return;
+  lines_.use();
+  glUniformMatrix4fv(lines_.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
+  glUniform2f(lines_.uniform("u_viewport_size"), float(v.width), float(v.height));
+  glUniform1f(lines_.uniform("u_width"), width);
+  glUniform1f(lines_.uniform("u_depth_bias"), kOverlayDepthBias);
+  glDepthMask(GL_FALSE);  // overlays never hide each other's parts
+  if (show_hidden) {
+    glDepthFunc(GL_GREATER);
+    glUniform4f(lines_.uniform("u_color"), color[0], color[1], color[2], color[3] * kHiddenAlpha);
+    lines.draw(GL_LINES);
+    glDepthFunc(GL_LEQUAL);
+  }
+  glUniform4f(lines_.uniform("u_color"), color[0], color[1], color[2], color[3]);
+  lines.draw(GL_LINES);
+  glDepthMask(GL_TRUE);
+}
+
+}  // namespace pl

@@ -1,0 +1,37 @@
+// Draws an uploaded scene into whatever framebuffer is bound (an offscreen target now, a GLFW
+// window's default framebuffer in the editor). Needs a current OpenGL 3.3 core context; owns
+// the programs and the colour map texture, not the scene.
+#pragma once
+
+#include "render/camera.hpp"
+#include "render/display_settings.hpp"
+#include "render/gl_objects.hpp"
+#include "render/gpu_scene.hpp"
+
+namespace pl {
+
+struct Viewport {
+  int x = 0, y = 0, width = 1, height = 1;  // framebuffer pixels; may extend past it (tiling)
+  // Line widths and point sizes are multiplied by this, so a 4096 px render looks like a
+  // 1000 px one.
+  double pixel_scale = 1.0;
+};
+
+class SceneRenderer {
+ public:
+  SceneRenderer();  // compiles the programs; throws std::runtime_error with the shader's log
+
+  // Draws the backdrop (unless settings.transparent), the surfaces and the overlays into
+  // `viewport` (the caller clears). `range` is used by the curvature modes.
+  void draw(const GpuScene& scene, const Camera& camera, const DisplaySettings& settings,
+            const ColorRange& range, const Viewport& viewport) const;
+
+ private:
+  void draw_lines(const GpuPrimitives& lines, const glm::mat4& vp, const Viewport& v,
+                  const float (&color)[4], float width, bool show_hidden) const;
+  gl::Program surface_, lines_, points_, backdrop_;
+  gl::VertexArray empty_vao_;  // the backdrop has no attributes, but core profiles need a VAO
+  gl::Texture color_map_;
+};
+
+}  // namespace pl
