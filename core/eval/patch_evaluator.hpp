@@ -4,6 +4,7 @@
 // and curvatures are recomputed.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -26,6 +27,9 @@ class PatchEvaluator {
   const std::vector<SurfaceGeometry>& geometry() const { return geometry_; }
   // Increases whenever samples change, so the renderer knows what to re-upload.
   uint64_t revision() const { return revision_; }
+  // An evaluator that replaces another continues its revision numbers, so a renderer that
+  // remembers the old number still sees a change.
+  void continue_revisions_from(uint64_t previous) { revision_ = std::max(revision_, previous + 1); }
 
   // Recomputes everything from the patch (the from-scratch path).
   void evaluate_all();
