@@ -150,7 +150,9 @@ Tessellation ConcavePolygonDomain::tessellate(int density) const {
       if (keep) t.points.push_back(x);
     }
   std::vector<bool> used;
-  t.triangles = triangulate_polygon(t.points, m, &used);
+  std::vector<uint32_t> corners;
+  for (int i = 0; i < n; ++i) corners.push_back(static_cast<uint32_t>(i * N));
+  t.triangles = triangulate_polygon(t.points, m, corners, &used);
   // Drop skipped interior points (rare: exactly on an edge), renumbering the triangles.
   std::vector<uint32_t> renumber(t.points.size());
   std::size_t kept = 0;

@@ -164,16 +164,13 @@ void clip_ears(std::span<const Vec2> p, std::vector<uint32_t> poly, Mesh& mesh) 
 
 std::vector<std::array<uint32_t, 3>> triangulate_polygon(std::span<const Vec2> points,
                                                          std::size_t boundary_count,
+                                                         const std::vector<uint32_t>& corners,
                                                          std::vector<bool>* used) {
   const std::size_t m = boundary_count;
-  if (m < 3) throw std::invalid_argument("a polygon needs at least 3 points");
+  if (m < 3 || corners.size() < 3) throw std::invalid_argument("a polygon needs 3 corners");
   // Corners first (ear clipping + Delaunay flips), then the straight-angle boundary points
   // split their boundary edges, then interior points: each step keeps the triangulation
   // constrained-Delaunay.
-  std::vector<uint32_t> corners;
-  for (std::size_t i = 0; i < m; ++i)
-    if (orient(points[(i + m - 1) % m], points[i], points[(i + 1) % m]) != 0)
-      corners.push_back(static_cast<uint32_t>(i));
   Mesh mesh(points);
   clip_ears(points, corners, mesh);
   const std::size_t nc = corners.size();

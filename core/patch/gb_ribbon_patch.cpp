@@ -1,0 +1,229 @@
+#include "core/patch/gb_ribbon_patch.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/math/bernstein.hpp"
+#include "core/param/mean_value.hpp"
+
+namespace pl {
+
+namespace {
+
+// Where |D| / |grad D| (about the distance to a side) is below this, x is on that side.
+constexpr double kOnSide = 1e-12;
+
+// la^ja lb^jb D^e with D = la + lb, total degree q = ja + jb + e >= 2. Where D vanishes (x on a
+// side away from this ribbon, so la and lb vanish too, all to first order along the same normal
+// n) the value and gradient are 0 and the Hessian is 2 c n n^T, c the product of the normal
+// slopes: the exact limit of the 0/0 quotient.
+Jet homogeneous(const Jet& la, int ja, const Jet& lb, int jb, const Jet& D, int e) {
+  if (e >= 0) return pow(la, ja) * pow(lb, jb) * pow(D, e);
+  const double g = std::hypot(D.fu, D.fv);
+  if (std::fabs(D.f) > kOnSide * g) return pow(la, ja) * pow(lb, jb) * pow(reciprocal(D), -e);
+  if (ja + jb + e >= 3 || g == 0) return Jet(0.0);
+  const double nx = D.fu / g, ny = D.fv / g;
+  const double ca = la.fu * nx + la.fv * ny, cb = lb.fu * nx + lb.fv * ny;
+  const double c = std::pow(ca, ja) * std::pow(cb, jb) * std::pow(g, e);
+  return Jet(0, 0, 0, 2 * c * nx * nx, 2 * c * nx * ny, 2 * c * ny * ny);
+}
+
+double cross(Vec2 a, Vec2 b) {
+  return a.x * b.y - a.y * b.x;
+}
+
+}  // namespace
+
+GBRibbonPatch::GBRibbonPatch(ConcavePolygonDomain domain,
+                             const std::vector<std::vector<std::vector<Vec3>>>& ribbons)
+    : domain_(std::move(domain)) {
+  const int n = domain_.side_count();
+  if (static_cast<int>(ribbons.size()) != n)
+    throw std::invalid_argument("gb-ribbons patch has " + std::to_string(ribbons.size()) +
+                                " ribbons for a " + std::to_string(n) + "-sided domain");
+  for (int i = 0; i < n; ++i) {
+    const auto& r = ribbons[i];
+    const std::string which = "ribbon " + std::to_string(i);
+    if (r.size() < 2)
+      throw std::invalid_argument(which + " needs at least 2 layers (G1 needs the second row)");
+    if (r[0].size() < 2) throw std::invalid_argument(which + " needs degree >= 1");
+    for (const auto& row : r)
+      if (row.size() != r[0].size())
+        throw std::invalid_argument(which + " has rows of different lengths");
+    degree_.push_back(static_cast<int>(r[0].size()) - 1);
+    layers_.push_back(static_cast<int>(r.size()));
+    for (const auto& row : r)
+      for (const Vec3& p : row)
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+          throw std::invalid_argument(which + " has a non-finite control point");
+  }
+  for (int i = 0; i < n; ++i) {
+    const Vec3 a = ribbons[i][0].back(), b = ribbons[(i + 1) % n][0].front();
+    const double scale = 1 + std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(a.z)});
+    if (glm::length(a - b) > 1e-12 * scale)
+      throw std::invalid_argument("ribbon " + std::to_string(i) + " does not end where ribbon " +
+                                  std::to_string((i + 1) % n) + " starts");
+    const Vec2 ea = domain_.vertex(i) - domain_.vertex(i - 1);
+    const Vec2 eb = domain_.vertex(i + 1) - domain_.vertex(i);
+    if (!(std::fabs(cross(ea, eb)) > 1e-9 * glm::length(ea) * glm::length(eb)))
+      throw std::invalid_argument("domain corner " + std::to_string(i) + " is straight");
+  }
+  std::size_t count = 0;
+  for (int i = 0; i < n; ++i) {
+    offset_.push_back(count);
+    count += degree_[i] + (layers_[i] - 1) * (degree_[i] + 1);
+  }
+  offset_.push_back(count);
+  points_.assign(count, Vec3(0));
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < layers_[i]; ++k)
+      for (int j = 0; j <= degree_[i]; ++j)
+        if (k > 0 || j < degree_[i]) points_[index(i, j, k)] = ribbons[i][k][j];
+  check_parameterisation();
+}
+
+std::size_t GBRibbonPatch::index(int side, int j, int k) const {
+  const int n = sides();
+  side = ((side % n) + n) % n;
+  const int d = degree_[side];
+  if (k == 0) return j == d ? offset_[(side + 1) % n] : offset_[side] + j;
+  return offset_[side] + d + (k - 1) * (d + 1) + j;
+}
+
+ControlPointKind GBRibbonPatch::kind(std::size_t k) const {
+  const auto it = std::upper_bound(offset_.begin(), offset_.end(), k);
+  const int side = static_cast<int>(it - offset_.begin()) - 1;
+  return k - offset_[side] < std::size_t(degree_[side]) ? ControlPointKind::Boundary
+                                                        : ControlPointKind::Inner;
+}
+
+std::vector<std::vector<std::vector<Vec3>>> GBRibbonPatch::ribbons() const {
+  std::vector<std::vector<std::vector<Vec3>>> r(sides());
+  for (int i = 0; i < sides(); ++i) {
+    r[i].assign(layers_[i], std::vector<Vec3>(degree_[i] + 1));
+    for (int k = 0; k < layers_[i]; ++k)
+      for (int j = 0; j <= degree_[i]; ++j) r[i][k][j] = point(i, j, k);
+  }
+  return r;
+}
+
+std::vector<BezierCurve> GBRibbonPatch::boundary_curves() const {
+  std::vector<BezierCurve> c;
+  for (const auto& r : ribbons()) c.emplace_back(r[0]);
+  return c;
+}
+
+void GBRibbonPatch::basis(Vec2 x, std::span<Jet> out) const {
+  const int n = sides();
+  const auto& v = domain_.vertices();
+  std::fill(out.begin(), out.end(), Jet(0.0));
+  for (int i = 0; i < n; ++i)
+    if (x == v[i]) return corner_basis(i, out);
+  std::vector<Jet> lam(n), h(n), D(n);
+  mean_value_coordinates(v, x, lam);
+  const auto at = [n](const std::vector<Jet>& a, int i) -> const Jet& { return a[(i + n) % n]; };
+  for (int i = 0; i < n; ++i) {
+    D[i] = at(lam, i - 1) + lam[i];
+    // Summing the other coordinates (instead of 1 - D) keeps h_i exactly tiny on side i.
+    h[i] = Jet(0.0);
+    for (int j = 1; j < n - 1; ++j) h[i] += at(lam, i + j);
+  }
+  Jet sum(0.0);
+  for (int i = 0; i < n; ++i) {
+    const int d = degree_[i], m = 2 * layers_[i] - 1;
+    const Jet h2 = h[i] * h[i], hp2 = at(h, i - 1) * at(h, i - 1),
+              hn2 = at(h, i + 1) * at(h, i + 1);
+    const Jet alpha = hp2 / (hp2 + h2), beta = hn2 / (hn2 + h2);
+    for (int k = 0; k < layers_[i]; ++k) {
+      const Jet hk = binomial(m, k) * pow(h[i], k);
+      for (int j = 0; j <= d; ++j) {
+        const Jet mu = 2 * j < d ? alpha : 2 * j == d ? Jet(1.0) : beta;
+        const Jet b = binomial(d, j) *
+                      homogeneous(lam[i], j, at(lam, i - 1), d - j, D[i], m - k - d) * hk * mu;
+        out[index(i, j, k)] += b;
+        sum += b;
+      }
+    }
+  }
+  const Jet inv = reciprocal(sum);
+  for (Jet& b : out) b = b * inv;
+}
+
+void GBRibbonPatch::corner_basis(int vtx, std::span<Jet> out) const {
+  // Corner between side a = vtx (ending here) and side b = vtx + 1 (starting here). Known
+  // exactly: the point, the first derivative along both sides (the curves' end tangents) and
+  // the second derivative along both sides. The mixed term D^2 S[e_a, e_b] is the mean of the
+  // two ribbons' twists (ribbon a: d/ds d/dh at (1, 0); ribbon b, whose h runs against e_a:
+  // minus its twist at (0, 0)).
+  const int n = sides(), a = vtx, b = (vtx + 1) % n;
+  struct Coef {
+    double val = 0, da = 0, db = 0, aa = 0, bb = 0, ab = 0;
+  };
+  std::vector<Coef> c(size());
+  const int d = degree_[a], m = 2 * layers_[a] - 1;
+  const int e = degree_[b], mb = 2 * layers_[b] - 1;
+  c[index(a, d, 0)].val += 1;
+  c[index(a, d, 0)].da += d;
+  c[index(a, d - 1, 0)].da -= d;
+  c[index(b, 1, 0)].db += e;
+  c[index(b, 0, 0)].db -= e;
+  if (d >= 2) {
+    c[index(a, d, 0)].aa += d * (d - 1);
+    c[index(a, d - 1, 0)].aa -= 2 * d * (d - 1);
+    c[index(a, d - 2, 0)].aa += d * (d - 1);
+  }
+  if (e >= 2) {
+    c[index(b, 0, 0)].bb += e * (e - 1);
+    c[index(b, 1, 0)].bb -= 2 * e * (e - 1);
+    c[index(b, 2, 0)].bb += e * (e - 1);
+  }
+  const double ta = 0.5 * m * d, tb = -0.5 * mb * e;
+  c[index(a, d, 1)].ab += ta;
+  c[index(a, d - 1, 1)].ab -= ta;
+  c[index(a, d, 0)].ab -= ta;
+  c[index(a, d - 1, 0)].ab += ta;
+  c[index(b, 1, 1)].ab += tb;
+  c[index(b, 0, 1)].ab -= tb;
+  c[index(b, 1, 0)].ab -= tb;
+  c[index(b, 0, 0)].ab += tb;
+  const Vec2 ea = domain_.vertex(a) - domain_.vertex(a - 1);
+  const Vec2 eb = domain_.vertex(a + 1) - domain_.vertex(a);
+  const double det = cross(ea, eb);
+  // Columns of E^-1, E = [e_a e_b]: grad = E^-T (da, db), Hessian = E^-T K E^-1.
+  const double p = eb.y / det, q = -eb.x / det, r = -ea.y / det, s = ea.x / det;
+  for (std::size_t k = 0; k < c.size(); ++k) {
+    const Coef& f = c[k];
+    out[k] = Jet(f.val, p * f.da + r * f.db, q * f.da + s * f.db,
+                 p * p * f.aa + 2 * p * r * f.ab + r * r * f.bb,
+                 p * q * f.aa + (p * s + r * q) * f.ab + r * s * f.bb,
+                 q * q * f.aa + 2 * q * s * f.ab + s * s * f.bb);
+  }
+}
+
+void GBRibbonPatch::check_parameterisation() const {
+  // Mean value coordinates can be negative behind reflex vertices; where lambda_i-1 + lambda_i
+  // reaches 0 inside the domain, s_i has a pole. Reject such domains instead of producing
+  // non-finite samples (checked on a tessellation's interior points).
+  const Tessellation t = domain_.tessellate(24);
+  std::vector<bool> boundary(t.points.size(), false);
+  for (const auto& side : t.sides)
+    for (uint32_t k : side) boundary[k] = true;
+  const int n = sides();
+  std::vector<Jet> lam(n), phi(size());
+  for (std::size_t k = 0; k < t.points.size(); ++k) {
+    if (boundary[k]) continue;
+    mean_value_coordinates(domain_.vertices(), t.points[k], lam);
+    for (int i = 0; i < n; ++i)
+      if (!(lam[(i + n - 1) % n].f + lam[i].f > 0))
+        throw std::invalid_argument(
+            "domain too concave for mean value coordinates: lambda_i-1 + lambda_i <= 0 for side " +
+            std::to_string(i));
+    basis(t.points[k], phi);
+    for (const Jet& j : phi)
+      if (!std::isfinite(j.f) || !std::isfinite(j.fuu) || !std::isfinite(j.fvv))
+        throw std::invalid_argument("gb-ribbons blend is singular inside the domain");
+  }
+}
+
+}  // namespace pl
