@@ -1,7 +1,12 @@
 #include <array>
 
 #include "core/io/bezier_patch_codec.hpp"
+#include "core/io/bspline_patch_codec.hpp"
+#include "core/io/coons_network_codec.hpp"
 #include "core/io/gb_patch_codec.hpp"
+#include "core/io/hermite_patch_codec.hpp"
+#include "core/io/interpolating_patch_codec.hpp"
+#include "core/io/nurbs_patch_codec.hpp"
 #include "core/io/patch_codec.hpp"
 
 namespace pl {
@@ -10,6 +15,11 @@ std::span<const PatchCodec> patch_codecs() {
   static const std::array codecs{
       PatchCodec{"bezier", read_bezier_patch, write_bezier_patch},
       PatchCodec{"gb", read_gb_patch, write_gb_patch},
+      PatchCodec{"interpolating", read_interpolating_patch, write_interpolating_patch},
+      PatchCodec{"hermite", read_hermite_patch, write_hermite_patch},
+      PatchCodec{"bspline", read_bspline_patch, write_bspline_patch},
+      PatchCodec{"nurbs", read_nurbs_patch, write_nurbs_patch},
+      PatchCodec{"coons-network", read_coons_network, write_coons_network},
   };
   return codecs;
 }
