@@ -4,6 +4,7 @@
 #include "core/io/bspline_patch_codec.hpp"
 #include "core/io/coons_network_codec.hpp"
 #include "core/io/gb_patch_codec.hpp"
+#include "core/io/gb_ribbon_patch_codec.hpp"
 #include "core/io/hermite_patch_codec.hpp"
 #include "core/io/interpolating_patch_codec.hpp"
 #include "core/io/nurbs_patch_codec.hpp"
@@ -15,6 +16,7 @@ std::span<const PatchCodec> patch_codecs() {
   static const std::array codecs{
       PatchCodec{"bezier", read_bezier_patch, write_bezier_patch},
       PatchCodec{"gb", read_gb_patch, write_gb_patch},
+      PatchCodec{"gb-ribbons", read_gb_ribbon_patch, write_gb_ribbon_patch},
       PatchCodec{"interpolating", read_interpolating_patch, write_interpolating_patch},
       PatchCodec{"hermite", read_hermite_patch, write_hermite_patch},
       PatchCodec{"bspline", read_bspline_patch, write_bspline_patch},
