@@ -12,13 +12,6 @@ namespace {
 // Points closer than this to a domain vertex (domain size ~2) are evaluated through the vertex
 // limit plus a first-order Taylor step: the corner weights are 0/0 at the vertex itself.
 constexpr double kVertexRadius = 1e-10;
-// The vertex limit is extrapolated from 6 points on the ray to the centre at fractions m/128
-// (m = 1..6); Lagrange weights for extrapolating to 0 are (-1)^(m+1) C(6, m). The restriction of
-// every blend to the ray is analytic in the fraction (alpha, beta are ratios of functions with
-// simple zeros there), so the error is O((6/128)^6 f^(6)), at the level of rounding.
-constexpr double kRayStep = 1.0 / 128;
-constexpr double kExtrapolation[6] = {6, -15, 20, -15, 6, -1};
-
 SurfaceJet times(const SurfaceJet& a, const Jet& b) {
   return {a.p * b.f,
           a.su * b.f + a.p * b.fu,
@@ -291,18 +284,108 @@ Jet GBPatch::influence_regular(std::size_t k, Vec2 x) const {
   return w;
 }
 
+void GBPatch::basis_vertex(int v, std::span<Jet> out) const {
+  // Exact limits at vertex v along the ray theta to the centre. Ribbon a = v ends at v and
+  // ribbon b = v+1 starts there; their shared 2x2 corner block is weighted X_k (1 - r) + Y_k r
+  // with X_k, Y_k the smooth Bernstein products of ribbons a and b and r = alpha_b =
+  // h_a / (h_a + h_b), 0/0 at v. D_k = Y_k - X_k vanishes with its gradient at v (the blocks
+  // are shared), so r D_k has value and gradient 0 there and its Hessian's limit is that of
+  // r0 * (second-order part of D_k), r0 the ratio of the linear parts of h_a, h_b.
+  // Every other ribbon m has lambda_{m-1} = lambda_m = 0 at v, and its products are
+  // C h^k lambda_{m-1}^(d-j) lambda_m^j / (lambda_{m-1} + lambda_m)^k: homogeneous of degree
+  // d - k in two vanishing functions, so only degree <= 2 leaves a (second-order) trace.
+  const Vec2 x = domain_.vertex(v), theta = domain_.interior_point() - x;
+  Jet lambda[kMaxSides];
+  Local L;
+  params_.evaluate(x, std::span(lambda, n_), std::span(L.s, n_), std::span(L.h, n_));
+  const int a = params_.wrap(v), b = params_.wrap(v + 1), d = d_, l = l_;
+  const auto alpha = [&](int i) {  // smooth alpha_i (never i = b)
+    const Jet& prev = L.h[params_.wrap(i - 1)];
+    return prev / (prev + L.h[params_.wrap(i)]);
+  };
+  const auto linear = [&](const Jet& f) {  // the linear part of f at x, evaluated at x + theta
+    return Jet(f.fu * theta.x + f.fv * theta.y, f.fu, f.fv, 0, 0, 0);
+  };
+  const auto hessian_only = [](const Jet& f) { return Jet(0, 0, 0, f.fuu, f.fuv, f.fvv); };
+  std::vector<Jet> X(size()), Y(size());
+  std::vector<char> block(size(), 0);
+  for (Jet& j : out) j = Jet();
+  for (int m = 0; m < n_; ++m) {
+    if (m == a || m == b) {
+      const Jet &s = L.s[m], &h = L.h[m];
+      const BernsteinTable bs(d, s.f), bh(d, h.f);
+      const Jet alpha_m = d >= 3 && m == a ? alpha(a) : Jet();
+      const Jet beta_m = d >= 3 && m == b ? Jet(1.0) - alpha(b + 1) : Jet();
+      for (int k = 0; k < l; ++k)
+        for (int j = 0; j <= d; ++j) {
+          const Mu mu_jk = mu(j, k);
+          if (mu_jk == Mu::Zero) continue;
+          const std::size_t idx = grid_[(m * l + k) * (d + 1) + j];
+          const Jet w = bs.compose(j, s) * bh.compose(k, h);
+          if (m == a && mu_jk == Mu::Beta) {
+            X[idx] += w, block[idx] = 1;
+          } else if (m == b && mu_jk == Mu::Alpha) {
+            Y[idx] += w, block[idx] = 1;
+          } else {
+            const Jet weight = mu_jk == Mu::Half    ? Jet(0.5)
+                               : mu_jk == Mu::Alpha ? alpha_m
+                               : mu_jk == Mu::Beta  ? beta_m
+                                                    : Jet(1.0);
+            out[idx] += w * weight;
+          }
+        }
+      continue;
+    }
+    const Jet &A = lambda[params_.wrap(m - 1)], &B = lambda[m];
+    const Jet A0 = linear(A), B0 = linear(B), S0 = A0 + B0;
+    const Jet alpha_m = d >= 3 ? alpha(m) : Jet(),
+              beta_m = d >= 3 ? Jet(1.0) - alpha(m + 1) : Jet();
+    for (int k = 0; k < l; ++k) {
+      if (d - k >= 3) continue;  // vanishes to third order
+      for (int j = 0; j <= d; ++j) {
+        const Mu mu_jk = mu(j, k);
+        if (mu_jk == Mu::Zero) continue;
+        Jet F;
+        if (k == 0) {
+          F = pow(A, d - j) * pow(B, j);  // d <= 2: a polynomial, exact as it stands
+        } else {
+          if (!(std::fabs(S0.f) > 0)) continue;  // both vanish to second order: F = O(|dx|^4)
+          F = hessian_only(pow(A0, d - j) * pow(B0, j) / pow(S0, k));
+        }
+        const Jet weight = mu_jk == Mu::Half    ? Jet(0.5)
+                           : mu_jk == Mu::Alpha ? alpha_m
+                           : mu_jk == Mu::Beta  ? beta_m
+                                                : Jet(1.0);
+        out[grid_[(m * l + k) * (d + 1) + j]] +=
+            (binomial(d, j) * binomial(d, k)) * pow(L.h[m], k) * weight * F;
+      }
+    }
+  }
+  const Jet P0 = linear(L.h[a]), Q0 = linear(L.h[b]);
+  const Jet r0 = P0 / (P0 + Q0);
+  for (std::size_t k = 0; k < size(); ++k) {
+    if (!block[k]) continue;
+    const Jet D = Y[k] - X[k];
+    const Vec2 Ht(D.fuu * theta.x + D.fuv * theta.y, D.fuv * theta.x + D.fvv * theta.y);
+    const Jet Dq(0.5 * (theta.x * Ht.x + theta.y * Ht.y), Ht.x, Ht.y, D.fuu, D.fuv, D.fvv);
+    out[k] += X[k] + hessian_only(r0 * Dq);
+  }
+  Jet total;
+  for (std::size_t k = 1; k < size(); ++k) total += out[k];
+  out[0] = Jet(1.0) - total;
+  const std::size_t corner = index(v, d, 0);
+  for (std::size_t k = 0; k < size(); ++k) out[k].f = k == corner ? 1.0 : 0.0;
+}
+
 SurfaceJet GBPatch::evaluate(Vec2 x) const {
   const int v = vertex_at(x);
   if (v < 0) return evaluate_regular(x);
-  const Vec2 corner = domain_.vertex(v), towards = domain_.interior_point() - corner;
-  SurfaceJet S;
-  for (int m = 0; m < 6; ++m)
-    add(S, evaluate_regular(corner + ((m + 1) * kRayStep) * towards), kExtrapolation[m]);
-  S.p = point(v, d_, 0);
-  const Vec2 delta = x - corner;
+  std::vector<Jet> phi(size());
+  basis(x, phi);
+  SurfaceJet S = combine(points_, phi);
+  S.p = point(v, d_, 0);  // exactly the corner point, plus the Taylor step of basis()
+  const Vec2 delta = x - domain_.vertex(v);
   S.p += delta.x * S.su + delta.y * S.sv;
-  S.su += delta.x * S.suu + delta.y * S.suv;
-  S.sv += delta.x * S.suv + delta.y * S.svv;
   return S;
 }
 
@@ -310,35 +393,21 @@ void GBPatch::basis(Vec2 x, std::span<Jet> out) const {
   assert(out.size() == size());
   const int v = vertex_at(x);
   if (v < 0) return basis_regular(x, out);
-  const Vec2 corner = domain_.vertex(v), towards = domain_.interior_point() - corner;
-  std::vector<Jet> node(size());
-  for (Jet& j : out) j = Jet();
-  for (int m = 0; m < 6; ++m) {
-    basis_regular(corner + ((m + 1) * kRayStep) * towards, node);
-    for (std::size_t k = 0; k < size(); ++k) out[k] += node[k] * kExtrapolation[m];
-  }
-  const std::size_t c = index(v, d_, 0);
-  for (std::size_t k = 0; k < size(); ++k) {
-    out[k].f = k == c ? 1.0 : 0.0;
-    shift(out[k], x - corner);
-  }
+  basis_vertex(v, out);
+  for (Jet& j : out) shift(j, x - domain_.vertex(v));
 }
 
 void GBPatch::influence(std::size_t k, std::span<const Vec2> xs, std::span<Jet> out) const {
   assert(k < size() && xs.size() == out.size());
+  std::vector<Jet> phi;
   for (std::size_t p = 0; p < xs.size(); ++p) {
-    const int v = vertex_at(xs[p]);
-    if (v < 0) {
+    if (vertex_at(xs[p]) < 0) {
       out[p] = influence_regular(k, xs[p]);
       continue;
     }
-    const Vec2 corner = domain_.vertex(v), towards = domain_.interior_point() - corner;
-    Jet w;
-    for (int m = 0; m < 6; ++m)
-      w += influence_regular(k, corner + ((m + 1) * kRayStep) * towards) * kExtrapolation[m];
-    w.f = k == index(v, d_, 0) ? 1.0 : 0.0;
-    shift(w, xs[p] - corner);
-    out[p] = w;
+    phi.resize(size());
+    basis(xs[p], phi);
+    out[p] = phi[k];
   }
 }
 

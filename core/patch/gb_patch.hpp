@@ -15,9 +15,11 @@
 // j = k..d-1-k the point P^i_{j,k}; the other entries of a ribbon's grid are the shared corner
 // block points of the neighbouring sides.
 //
-// Singular points: the corner weights alpha, beta are 0/0 at the domain vertices. There the value
-// is the corner control point and the derivatives are limits taken along the ray to the centre
-// (first derivatives do not depend on the direction; second derivatives in general do).
+// Singular points: the corner weights alpha, beta are 0/0 at the domain vertices (and for n = 3
+// s_i at the opposite vertex). There the value is the corner control point and the derivatives
+// are exact limits along the ray to the centre (first derivatives do not depend on the
+// direction; second derivatives in general do). s_i and h_i are computed in forms that stay
+// defined on the far sides (PolygonParameters), so nothing else is singular.
 #pragma once
 
 #include <array>
@@ -68,6 +70,7 @@ class GBPatch final : public Patch {
   SurfaceJet evaluate_regular(Vec2 x) const;
   void basis_regular(Vec2 x, std::span<Jet> out) const;
   Jet influence_regular(std::size_t k, Vec2 x) const;
+  void basis_vertex(int v, std::span<Jet> out) const;  // exact limits at domain vertex v
   int vertex_at(Vec2 x) const;  // index of the domain vertex x sits on, or -1
 
   int n_, d_, l_;
