@@ -77,14 +77,24 @@ void Camera::frame(const Box& box, double aspect, double margin) {
   if (box.empty()) return;
   target = box.centre();
   scene_radius = std::max(box.radius(), 1e-12);
-  const double r = scene_radius * margin;
-  // The sphere must fit the narrower of the two field-of-view angles.
-  const double half_v = 0.5 * fov_y;
-  const double half_h = std::atan(std::tan(half_v) * aspect);
-  const double half = std::min(half_v, half_h);
-  // Perspective: the sphere is tangent to the narrower view cone. Orthographic: the half height
-  // distance tan(half_v) must cover r vertically and r / aspect horizontally.
-  distance = orthographic ? r / std::min(1.0, aspect) / std::tan(half_v) : r / std::sin(half);
+  const double tan_v = std::tan(0.5 * fov_y), tan_h = tan_v * aspect;
+  const Vec3 f = forward(), u = up(), r = right();
+  // Fit the box's eight corners rather than its bounding sphere: flat parts fill the view.
+  double need_h = 0, need_d = 0;
+  for (int i = 0; i < 8; ++i) {
+    const Vec3 c((i & 1) ? box.hi.x : box.lo.x, (i & 2) ? box.hi.y : box.lo.y,
+                 (i & 4) ? box.hi.z : box.lo.z);
+    const Vec3 q = (c - target) * margin;
+    const double x = std::abs(glm::dot(q, r)), y = std::abs(glm::dot(q, u));
+    const double z = glm::dot(q, f);  // > 0: beyond the target, seen smaller
+    need_h = std::max({need_h, y, x / aspect});
+    // Perspective: the corner is inside when x <= (distance + z) tan_h, likewise for y.
+    need_d = std::max({need_d, x / tan_h - z, y / tan_v - z});
+  }
+  const double floor_d = 1e-6 * scene_radius;  // the eye never sits on the target
+  distance = std::max(orthographic ? need_h / tan_v : need_d, floor_d);
+  // Perspective: the eye must stay outside the box for the near plane to make sense.
+  if (!orthographic) distance = std::max(distance, scene_radius * 1.05);
 }
 
 Camera preset_camera(ViewPreset preset, const Box& box, double aspect, bool orthographic) {

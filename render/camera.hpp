@@ -52,8 +52,9 @@ struct Camera {
   void pan(double dx, double dy);
   void zoom(double factor);
 
-  // Aims at the box centre from the current direction and sets the distance so the box's
-  // bounding sphere fits the view at this aspect (width / height), with `margin` (>= 1) around it.
+  // Aims at the box centre from the current direction and sets the distance so the box's eight
+  // corners, scaled about the centre by `margin` (>= 1), are inside the view at this aspect
+  // (width / height).
   void frame(const Box& box, double aspect, double margin = 1.08);
 
   double scene_radius = 1;  // set by frame(); sizes the clipping planes

@@ -14,16 +14,34 @@ namespace {
 // Line widths and point sizes are designed for this image height.
 constexpr double kReferenceHeight = 1000.0;
 
-Viewport panel_viewport(const FrameRequest& r, int i) {
-  const int n = static_cast<int>(r.panels.size());
-  const int x0 = r.width * i / n, x1 = r.width * (i + 1) / n;
-  return {x0, 0, x1 - x0, r.height, 1.0};
+std::string legend_title(const DisplaySettings& s) {
+  return std::string(curvature_name(s.curvature)) + " curvature";
 }
 
 }  // namespace
 
-double panel_aspect(int width, int height, int count) {
-  return (static_cast<double>(width) / std::max(1, count)) / std::max(1, height);
+std::vector<Viewport> panel_viewports(int width, int height, int count,
+                                      const DisplaySettings& settings, const ColorRange& range) {
+  int usable = width;
+  if (settings.base == BaseMode::Curvature) {
+    const int reserve =
+        legend_reserved_width(range, legend_title(settings), legend_scale(width, height));
+    // Never squeeze the model below half the image for the legend's sake.
+    usable = std::max(width / 2, width - reserve);
+  }
+  std::vector<Viewport> out;
+  const int n = std::max(1, count);
+  for (int i = 0; i < n; ++i) {
+    const int x0 = usable * i / n, x1 = usable * (i + 1) / n;
+    out.push_back({x0, 0, x1 - x0, height, 1.0});
+  }
+  return out;
+}
+
+double panel_aspect(int width, int height, int count, const DisplaySettings& settings,
+                    const ColorRange& range) {
+  const Viewport v = panel_viewports(width, height, count, settings, range).front();
+  return static_cast<double>(v.width) / v.height;
 }
 
 Image render_frame(const SceneRenderer& renderer, const FrameRequest& r) {
@@ -34,6 +52,8 @@ Image render_frame(const SceneRenderer& renderer, const FrameRequest& r) {
   OffscreenTarget target(tw, th);
   Image image(r.width, r.height);
   const double pixel_scale = std::max(0.5, r.height / kReferenceHeight);
+  const std::vector<Viewport> panels =
+      panel_viewports(r.width, r.height, static_cast<int>(r.panels.size()), r.settings, r.range);
 
   // Tiles in GL's bottom-left pixel coordinates of the whole image; each panel keeps its full
   // viewport, shifted by the tile origin, so tiles join seamlessly and line widths stay in
@@ -44,10 +64,11 @@ Image render_frame(const SceneRenderer& renderer, const FrameRequest& r) {
       glClearColor(0, 0, 0, 0);
       glClearDepth(1.0);
       glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+      if (!r.settings.transparent) renderer.draw_backdrop({-tx, -ty, r.width, r.height, 1.0});
       for (int i = 0; i < static_cast<int>(r.panels.size()); ++i) {
-        Viewport v = panel_viewport(r, i);
+        Viewport v = panels[i];
         if (v.x + v.width <= tx || v.x >= tx + tw) continue;
-        // Keep each panel inside its own columns: the backdrop covers its whole viewport.
+        // Keep each panel inside its own columns.
         glEnable(GL_SCISSOR_TEST);
         glScissor(v.x - tx, 0, v.width, th);
         v.x -= tx;
@@ -63,7 +84,7 @@ Image render_frame(const SceneRenderer& renderer, const FrameRequest& r) {
   const int scale = legend_scale(r.width, r.height);
   for (int i = 0; i < static_cast<int>(r.panels.size()); ++i) {
     if (r.panels[i].label.empty()) continue;
-    const Viewport v = panel_viewport(r, i);
+    const Viewport& v = panels[i];
     draw_text(image, v.x + 8 * scale, 8 * scale, r.panels[i].label, scale + 1,
               {0.13f, 0.14f, 0.17f});
   }

@@ -19,14 +19,18 @@ struct FramePanel {
 struct FrameRequest {
   int width = 1600, height = 1200;
   std::vector<FramePanel> panels;
-  Camera camera;  // framed for one panel's aspect (see panel_aspect)
+  Camera camera;  // framed for panel_aspect()
   DisplaySettings settings;
   ColorRange range;
   int tile_size = 2048;  // further limited by the driver's maximum
 };
 
-// Width / height of each of `count` side-by-side panels.
-double panel_aspect(int width, int height, int count);
+// Where the panels go: side by side, leaving room at the right for the legend of a curvature
+// mode. Frame the camera for the aspect of these viewports.
+std::vector<Viewport> panel_viewports(int width, int height, int count,
+                                      const DisplaySettings& settings, const ColorRange& range);
+double panel_aspect(int width, int height, int count, const DisplaySettings& settings,
+                    const ColorRange& range);
 
 Image render_frame(const SceneRenderer& renderer, const FrameRequest& request);
 

@@ -19,18 +19,43 @@ int legend_scale(int width, int height) {
   return std::max(1, static_cast<int>(std::lround(std::min(width, height * 4 / 3) / 520.0)));
 }
 
+namespace {
+
+struct LegendMetrics {
+  int u, bar_w, tick_len, gap, pad, label_w, title_w, panel_w, margin;
+};
+
+LegendMetrics metrics(const ColorRange& range, const std::string& title, int scale) {
+  LegendMetrics m{};
+  m.u = scale;
+  m.bar_w = 7 * scale;
+  m.tick_len = 3 * scale;
+  m.gap = 3 * scale;  // keeps a tick apart from a label's minus sign
+  m.pad = 6 * scale;
+  m.margin = 8 * scale;
+  for (double t : {range.hi, 0.5 * range.hi, 0.0, 0.5 * range.lo, range.lo})
+    m.label_w = std::max(m.label_w, text_width(format_tick(t), scale));
+  m.title_w = text_width(title, scale);
+  m.panel_w = std::max(m.bar_w + m.tick_len + m.gap + m.label_w, m.title_w) + 2 * m.pad;
+  return m;
+}
+
+}  // namespace
+
+int legend_reserved_width(const ColorRange& range, const std::string& title, int scale) {
+  const LegendMetrics m = metrics(range, title, scale);
+  return m.panel_w + 2 * m.margin;
+}
+
 void draw_legend(Image& image, const ColorRange& range, const std::string& title, int scale) {
+  const LegendMetrics m = metrics(range, title, scale);
   const int u = scale;
-  const int bar_w = 7 * u, bar_h = std::max(40, image.height / 2);
+  const int bar_w = m.bar_w, bar_h = std::max(40, image.height / 2);
   const double ticks[5] = {range.hi, 0.5 * range.hi, 0.0, 0.5 * range.lo, range.lo};
-  int label_w = 0;
-  for (double t : ticks) label_w = std::max(label_w, text_width(format_tick(t), u));
-  const int title_w = text_width(title, u);
-  const int pad = 6 * u, tick_len = 3 * u;
-  const int content_w = std::max(bar_w + tick_len + 2 * u + label_w, title_w);
-  const int panel_w = content_w + 2 * pad;
+  const int pad = m.pad, tick_len = m.tick_len;
+  const int panel_w = m.panel_w;
   const int panel_h = bar_h + text_height(u) + 6 * u + 2 * pad;
-  const int x0 = image.width - panel_w - 8 * u;
+  const int x0 = image.width - panel_w - m.margin;
   const int y0 = (image.height - panel_h) / 2;
   fill_rounded_rect(image, x0, y0, x0 + panel_w, y0 + panel_h, 4 * u, {1.0f, 1.0f, 1.0f}, 0.82f);
 
@@ -58,7 +83,7 @@ void draw_legend(Image& image, const ColorRange& range, const std::string& title
     for (int k = 0; k < tick_len; ++k)
       for (int w = 0; w < std::max(1, u / 2 + 1); ++w)
         image.blend(bx + bar_w + k, y + w, ink, 1.0f);
-    draw_text(image, bx + bar_w + tick_len + 2 * u, y - text_height(u) / 2 + 1,
+    draw_text(image, bx + bar_w + tick_len + m.gap, y - text_height(u) / 2 + 1,
               format_tick(ticks[i]), u, ink);
   }
 }

@@ -16,6 +16,10 @@ std::string format_tick(double value);
 // text scale (>= 1); everything else is sized from it.
 void draw_legend(Image& image, const ColorRange& range, const std::string& title, int scale);
 
+// Width in pixels the legend takes at the right edge, margins included, so panels can be laid
+// out beside it.
+int legend_reserved_width(const ColorRange& range, const std::string& title, int scale);
+
 // The text scale for an image of this size: readable on 800 px, not shouting on 4096 px.
 int legend_scale(int width, int height);
 

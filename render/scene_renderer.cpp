@@ -44,16 +44,6 @@ void SceneRenderer::draw(const GpuScene& scene, const Camera& camera,
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
 
-  if (!settings.transparent) {
-    backdrop_.use();
-    glUniform4f(backdrop_.uniform("u_viewport"), float(v.x), float(v.y), float(v.width),
-                float(v.height));
-    glDepthMask(GL_FALSE);
-    glBindVertexArray(empty_vao_.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glDepthMask(GL_TRUE);
-  }
-
   const double aspect = double(v.width) / double(v.height);
   const glm::mat4 vp(camera.projection(aspect) * camera.view());
   // Studio lights fixed to the camera: key from the upper left, fill from the lower right.
@@ -69,6 +59,7 @@ void SceneRenderer::draw(const GpuScene& scene, const Camera& camera,
   set(surface_.uniform("u_key_light"), key);
   set(surface_.uniform("u_fill_light"), fill);
   set(surface_.uniform("u_camera_up"), u);
+  set(surface_.uniform("u_camera_forward"), f);
   glUniform1i(surface_.uniform("u_isophote_lines"), settings.isophote_lines ? 1 : 0);
   set(surface_.uniform("u_isophote_direction"), glm::normalize(settings.isophote_direction));
   glUniform1f(surface_.uniform("u_isophote_count"), float(settings.isophote_count));
@@ -115,6 +106,18 @@ void SceneRenderer::draw(const GpuScene& scene, const Camera& camera,
   glDisable(GL_BLEND);
   glBindVertexArray(0);
   gl::check_error("SceneRenderer::draw");
+}
+
+void SceneRenderer::draw_backdrop(const Viewport& v) const {
+  glViewport(v.x, v.y, v.width, v.height);
+  glDisable(GL_BLEND);
+  glDisable(GL_DEPTH_TEST);
+  backdrop_.use();
+  glUniform4f(backdrop_.uniform("u_viewport"), float(v.x), float(v.y), float(v.width),
+              float(v.height));
+  glBindVertexArray(empty_vao_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
 }
 
 void SceneRenderer::draw_lines(const GpuPrimitives& lines, const glm::mat4& vp, const Viewport& v,

@@ -21,10 +21,12 @@ class SceneRenderer {
  public:
   SceneRenderer();  // compiles the programs; throws std::runtime_error with the shader's log
 
-  // Draws the backdrop (unless settings.transparent), the surfaces and the overlays into
-  // `viewport` (the caller clears). `range` is used by the curvature modes.
+  // Draws the surfaces and the overlays into `viewport` (the caller clears and draws the
+  // backdrop). `range` is used by the curvature modes.
   void draw(const GpuScene& scene, const Camera& camera, const DisplaySettings& settings,
             const ColorRange& range, const Viewport& viewport) const;
+  // The studio backdrop (a soft gradient) over `viewport`, without touching depth.
+  void draw_backdrop(const Viewport& viewport) const;
 
  private:
   void draw_lines(const GpuPrimitives& lines, const glm::mat4& vp, const Viewport& v,

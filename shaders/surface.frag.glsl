@@ -9,6 +9,7 @@ uniform vec3 u_eye;
 uniform vec3 u_key_light;   // unit, towards the light; fixed to the camera (studio lighting)
 uniform vec3 u_fill_light;
 uniform vec3 u_camera_up;
+uniform vec3 u_camera_forward;
 
 uniform bool u_isophote_lines;
 uniform vec3 u_isophote_direction;  // unit, fixed in the model
@@ -68,9 +69,10 @@ void main() {
     if (!gl_FrontFacing) color *= 0.55;
   } else if (u_base == 2) {
     vec3 r = reflect(-view, n);
-    // Angle of the reflected ray from the camera's up axis: stripes of a striped dome that
-    // moves with the camera, as in a car-body inspection tunnel.
-    float s = acos(clamp(dot(r, u_camera_up), -1.0, 1.0)) / 3.14159265 * u_zebra_count;
+    // Light tubes at infinity running along the camera's right axis, as in a car-body
+    // inspection tunnel that moves with the viewer: the stripe parameter is the angle of the
+    // reflected ray around that axis.
+    float s = atan(dot(r, u_camera_up), -dot(r, u_camera_forward)) / 3.14159265 * u_zebra_count;
     // Distance (in periods) to the centre of the nearest dark stripe, antialiased over a pixel.
     float g = abs(fract(s - 0.5 * u_zebra_width + 0.5) - 0.5);
     float w = 0.5 * max(fwidth(s), 1e-6);

@@ -15,6 +15,10 @@ std::span<const Command> commands() {
               run_export},
       Command{"analyze", "FILE [--density N] [--scheme gregory|gb] [--json]", run_analyze},
       Command{"convert", "IN -o OUT  (.gbp <-> .json scene)", run_convert},
+      Command{"render",
+              "FILE -o OUT.png [--size WxH] [--mode MODE] [--view VIEW] [--compare] "
+              "[--transparent] [--density N]",
+              run_render},
   };
   return table;
 }

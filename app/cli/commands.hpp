@@ -19,5 +19,6 @@ std::span<const Command> commands();
 int run_export(std::span<const std::string> args, std::ostream& out, std::ostream& err);
 int run_analyze(std::span<const std::string> args, std::ostream& out, std::ostream& err);
 int run_convert(std::span<const std::string> args, std::ostream& out, std::ostream& err);
+int run_render(std::span<const std::string> args, std::ostream& out, std::ostream& err);
 
 }  // namespace pl

@@ -1,0 +1,77 @@
+#include "app/cli/draw_scene_builder.hpp"
+
+#include "core/patch/bezier_patch.hpp"
+
+namespace pl {
+
+namespace {
+
+// Samples per curve for overlay polylines: smooth at 4096 px for the cubic edges we draw.
+constexpr int kCurveSamples = 64;
+
+Polyline sample(const BezierCurve& c) {
+  Polyline l;
+  for (int i = 0; i <= kCurveSamples; ++i) l.push_back(c.point(double(i) / kCurveSamples));
+  return l;
+}
+
+uint32_t add_point(ControlNet& net, const Vec3& p, ControlPointKind kind) {
+  net.points.push_back(p);
+  net.kinds.push_back(kind);
+  return static_cast<uint32_t>(net.points.size() - 1);
+}
+
+// A tensor-product Bézier net: every point, and the rows and columns of the grid.
+void add_bezier_net(ControlNet& net, const BezierPatch& b) {
+  const int m = b.degree_u(), n = b.degree_v();
+  const auto base = static_cast<uint32_t>(net.points.size());
+  for (std::size_t k = 0; k < b.size(); ++k) add_point(net, b.control_point(k), b.kind(k));
+  auto id = [&](int i, int j) { return base + static_cast<uint32_t>(i * (n + 1) + j); };
+  for (int i = 0; i <= m; ++i)
+    for (int j = 0; j <= n; ++j) {
+      if (i < m) net.segments.push_back({id(i, j), id(i + 1, j)});
+      if (j < n) net.segments.push_back({id(i, j), id(i, j + 1)});
+    }
+}
+
+}  // namespace
+
+DrawScene build_draw_scene(const Scene& scene, const SceneSurfaces& surfaces) {
+  DrawScene d;
+  for (const SceneSurface& s : surfaces.surfaces) {
+    d.surfaces.push_back(make_surface_mesh(*s.evaluator, s.name));
+    for (const BezierCurve& c : s.evaluator->patch().boundary_curves())
+      d.borders.push_back(sample(c));
+  }
+  if (scene.network) {
+    const Network& net = *scene.network;
+    // The network's own control polygon: vertices and edge handles, what a designer drags.
+    std::vector<uint32_t> vertex_ids;
+    for (const Vec3& v : net.vertices)
+      vertex_ids.push_back(add_point(d.net, v, ControlPointKind::Boundary));
+    for (std::size_t e = 0; e < net.edges.size(); ++e) {
+      const NetworkEdge& edge = net.edges[e];
+      const uint32_t h1 = add_point(d.net, edge.handles[0], ControlPointKind::Boundary);
+      const uint32_t h2 = add_point(d.net, edge.handles[1], ControlPointKind::Boundary);
+      d.net.segments.push_back({vertex_ids.at(edge.v[0]), h1});
+      d.net.segments.push_back({h1, h2});
+      d.net.segments.push_back({h2, vertex_ids.at(edge.v[1])});
+      d.network_curves.push_back(sample(net.edge_curve(static_cast<int>(e))));
+    }
+  }
+  for (const SceneSurface& s : surfaces.surfaces) {
+    const Patch& p = s.evaluator->patch();
+    if (const auto* b = dynamic_cast<const BezierPatch*>(&p)) {
+      add_bezier_net(d.net, *b);
+      continue;
+    }
+    // Other patch types have no grid to draw: show their points by kind. On network faces the
+    // boundary points are the network's, already drawn above.
+    for (std::size_t k = 0; k < p.size(); ++k)
+      if (s.face < 0 || p.kind(k) != ControlPointKind::Boundary)
+        add_point(d.net, p.control_point(k), p.kind(k));
+  }
+  return d;
+}
+
+}  // namespace pl

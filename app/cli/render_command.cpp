@@ -1,0 +1,160 @@
+// `patchlab render FILE -o OUT.png ...` (../shared/spec/cli.md): headless, through an EGL
+// offscreen context, so it works with no X server and DISPLAY unset.
+#include <charconv>
+#include <cmath>
+
+#include "app/cli/arguments.hpp"
+#include "app/cli/camera_file.hpp"
+#include "app/cli/cli.hpp"
+#include "app/cli/commands.hpp"
+#include "app/cli/draw_scene_builder.hpp"
+#include "app/cli/load_input.hpp"
+#include "core/io/atomic_file.hpp"
+#include "core/io/data_error.hpp"
+#include "render/egl_context.hpp"
+#include "render/frame.hpp"
+
+namespace pl {
+
+namespace {
+
+constexpr int kMaxSide = 4096;
+
+std::pair<int, int> parse_size(const std::optional<std::string>& v) {
+  if (!v) return {1600, 1200};
+  const std::size_t x = v->find('x');
+  int w = 0, h = 0;
+  auto whole = [](const std::string& s, int& out) {
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+    return ec == std::errc() && end == s.data() + s.size() && !s.empty();
+  };
+  if (x == std::string::npos || !whole(v->substr(0, x), w) || !whole(v->substr(x + 1), h) ||
+      w < 1 || h < 1 || w > kMaxSide || h > kMaxSide)
+    throw UsageError("--size takes WxH with each side from 1 to 4096, got \"" + *v + "\"");
+  return {w, h};
+}
+
+// "--range R" gives [-R, R]; "--range LO:HI" needs LO < 0 < HI so zero keeps the neutral colour.
+ColorRange parse_range(const std::string& v) {
+  auto number = [&](const std::string& s) {
+    double d = 0;
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), d);
+    if (ec != std::errc() || end != s.data() + s.size() || s.empty() || !std::isfinite(d))
+      throw UsageError("--range takes R or LO:HI (numbers), got \"" + v + "\"");
+    return d;
+  };
+  const std::size_t colon = v.find(':');
+  ColorRange r;
+  if (colon == std::string::npos) {
+    const double m = number(v);
+    r = {-m, m};
+  } else {
+    r = {number(v.substr(0, colon)), number(v.substr(colon + 1))};
+  }
+  if (!(r.lo < 0 && r.hi > 0))
+    throw UsageError("--range needs LO < 0 < HI (the colour map is centred on zero), got \"" + v +
+                     "\"");
+  return r;
+}
+
+bool ends_with_png(const std::string& s) {
+  return s.size() > 4 &&
+         (s.compare(s.size() - 4, 4, ".png") == 0 || s.compare(s.size() - 4, 4, ".PNG") == 0);
+}
+
+DisplaySettings parse_settings(const Arguments& a) {
+  DisplaySettings settings;
+  try {
+    settings = parse_display_mode(a.value("--mode").value_or("shaded"));
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--mode: ") + e.what());
+  }
+  settings.transparent = a.flag("--transparent");
+  settings.curvature_lighting = !a.flag("--flat");
+  if (const auto r = a.value("--range")) settings.range = parse_range(*r);
+  return settings;
+}
+
+}  // namespace
+
+int run_render(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
+  const Arguments a(args, {"-o", "--size", "--mode", "--view", "--density", "--scheme", "--range"},
+                    {"--compare", "--transparent", "--flat"});
+  if (a.positional().size() != 1) throw UsageError("render takes exactly one input FILE");
+  const auto target = a.value("-o");
+  if (!target || !ends_with_png(*target)) throw UsageError("render needs -o OUT.png");
+  const auto [width, height] = parse_size(a.value("--size"));
+  const int density = a.integer("--density", 32, 1, 4096);
+  const auto scheme = parse_scheme_option(a.value("--scheme"));
+  const bool compare = a.flag("--compare");
+  if (compare && scheme) throw UsageError("--compare renders both schemes; drop --scheme");
+  const DisplaySettings settings = parse_settings(a);
+  const std::string view = a.value("--view").value_or("iso");
+  const auto preset = parse_view_preset(view);
+
+  const std::string file = a.positional()[0];
+  const Scene scene = load_input(file);
+  if (compare && !scene.network)
+    throw DataError(file, "", "--compare needs a scene with a curve network");
+  TessellationCache cache;
+  std::vector<DrawScene> draws;
+  std::vector<std::string> labels;
+  if (compare) {
+    for (const auto& [s, label] : {std::pair{FaceScheme::Gregory, "Gregory"},
+                                   std::pair{FaceScheme::GB, "Generalized Bezier"}}) {
+      const SceneSurfaces surfaces = evaluate_scene(scene, density, s, cache, file);
+      draws.push_back(build_draw_scene(scene, surfaces));
+      labels.push_back(label);
+    }
+  } else {
+    draws.push_back(build_draw_scene(scene, evaluate_scene(scene, density, scheme, cache, file)));
+    labels.emplace_back();
+  }
+
+  Box box;
+  std::vector<const SurfaceMesh*> meshes;
+  for (const DrawScene& d : draws) {
+    const Box b = d.bounds();
+    if (!b.empty()) {
+      box.add(b.lo);
+      box.add(b.hi);
+    }
+    for (const SurfaceMesh& m : d.surfaces) meshes.push_back(&m);
+  }
+  FrameRequest request;
+  request.width = width;
+  request.height = height;
+  request.settings = settings;
+  // One range for every panel, so equal colours mean equal curvature across the comparison.
+  request.range = settings.range
+                      ? *settings.range
+                      : automatic_range(meshes, settings.curvature, settings.range_percentile);
+  const double aspect =
+      panel_aspect(width, height, static_cast<int>(draws.size()), settings, request.range);
+  request.camera =
+      preset ? preset_camera(*preset, box, aspect) : read_camera_file(view, box, aspect);
+
+  try {
+    EglContext context;
+    SceneRenderer renderer;
+    std::vector<GpuScene> gpu;
+    gpu.reserve(draws.size());
+    for (const DrawScene& d : draws) gpu.emplace_back(d);
+    for (std::size_t i = 0; i < gpu.size(); ++i) request.panels.push_back({&gpu[i], labels[i]});
+    const Image image = render_frame(renderer, request);
+    write_file_atomically(*target, encode_png(image));
+  } catch (const GlContextError& e) {
+    err << "patchlab: cannot render " << file << ": " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const DataError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    err << "patchlab: cannot render " << file << ": " << e.what() << "\n";
+    return kExitBadInput;
+  }
+  out << "wrote " << width << "x" << height << " image of " << meshes.size() << " patch(es) to "
+      << *target << "\n";
+  return kExitOk;
+}
+
+}  // namespace pl
