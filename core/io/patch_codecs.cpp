@@ -1,6 +1,7 @@
 #include <array>
 
 #include "core/io/bezier_patch_codec.hpp"
+#include "core/io/gregory_patch_codecs.hpp"
 #include "core/io/bspline_patch_codec.hpp"
 #include "core/io/coons_network_codec.hpp"
 #include "core/io/gb_patch_codec.hpp"
@@ -15,6 +16,8 @@ namespace pl {
 std::span<const PatchCodec> patch_codecs() {
   static const std::array codecs{
       PatchCodec{"bezier", read_bezier_patch, write_bezier_patch},
+      PatchCodec{"gregory-quad", read_gregory_quad_patch, write_gregory_quad_patch},
+      PatchCodec{"gregory-tri", read_gregory_tri_patch, write_gregory_tri_patch},
       PatchCodec{"gb", read_gb_patch, write_gb_patch},
       PatchCodec{"gb-ribbons", read_gb_ribbon_patch, write_gb_ribbon_patch},
       PatchCodec{"interpolating", read_interpolating_patch, write_interpolating_patch},

@@ -1,17 +1,53 @@
 #include "core/network/network_filling.hpp"
 
+#include <numeric>
+
 #include "core/io/data_error.hpp"
+#include "core/network/face_ribbons.hpp"
+#include "core/network/gregory_face.hpp"
 
 namespace pl {
 
-NetworkFilling fill_network(const Network& network, const NetworkTopology&,
-                            std::optional<FaceScheme>, const std::string& source) {
-  // Gregory (issue #3) and GB (issue #4) face filling are not built yet: say so instead of
-  // producing a surface that is not the one the file describes.
-  if (!network.faces.empty())
-    throw DataError(source, "network.faces[0]",
-                    "filling network faces is not available in this version");
-  return {};
+namespace {
+std::string face_path(int f) {
+  return "network.faces[" + std::to_string(f) + "]";
+}
+}  // namespace
+
+FacePatch build_face_patch(const Network& network, int face, FaceScheme scheme,
+                           const FaceRibbons& ribbons, const std::string& source) {
+  FacePatch fp;
+  fp.face = face;
+  if (scheme == FaceScheme::Gregory) {
+    fp.patch = gregory_face_patch(ribbons);
+    fp.patch_side.resize(ribbons.sides.size());
+    std::iota(fp.patch_side.begin(), fp.patch_side.end(), 0);  // face side i = domain side i
+    return fp;
+  }
+  // GB faces (issue #4) are built from the same ribbons; until then say so rather than
+  // produce a surface that is not the one the file describes.
+  (void)network;
+  throw DataError(source, face_path(face),
+                  "GB faces are not available yet (this face has " +
+                      std::to_string(ribbons.sides.size()) + " sides and scheme gb)");
+}
+
+NetworkFilling fill_network(const Network& network, const NetworkTopology& topology,
+                            std::optional<FaceScheme> scheme_override, const std::string& source) {
+  NetworkFilling out;
+  std::vector<FaceScheme> schemes;
+  for (std::size_t f = 0; f < network.faces.size(); ++f)
+    schemes.push_back(resolve_scheme(network.faces[f], scheme_override));
+  std::vector<FaceRibbons> ribbons;
+  try {
+    ribbons = build_face_ribbons(network, topology, out.projected_vertices);
+  } catch (const DataError& e) {
+    throw DataError(source, e.where(), e.message());  // the construction does not know the file
+  }
+  for (std::size_t f = 0; f < network.faces.size(); ++f)
+    out.faces.push_back(
+        build_face_patch(network, static_cast<int>(f), schemes[f], ribbons[f], source));
+  return out;
 }
 
 }  // namespace pl
