@@ -13,5 +13,6 @@ int main(int argc, char** argv) {
   std::printf("# patchlab_bench: %d OpenMP threads%s\n", omp_get_max_threads(),
               options.quick ? " (quick mode: figures are not meaningful)" : "");
   pl::bench::bench_bezier(options);
+  pl::bench::bench_gb(options);
   return 0;
 }

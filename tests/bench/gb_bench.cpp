@@ -1,0 +1,76 @@
+// Figures of the GB issue: full evaluation of cagd86 (5 sides, degree 5) with second
+// derivatives, normals and curvatures; the drag update at ~1e5 samples with its influence column
+// prepared; the one-off column build at ~1e6 samples.
+#include <chrono>
+#include <filesystem>
+
+#include "bench_common.hpp"
+#include "core/eval/patch_evaluator.hpp"
+#include "core/io/gbp_io.hpp"
+
+namespace pl::bench {
+
+namespace {
+
+std::shared_ptr<GBPatch> cagd86() {
+#ifdef PATCHLAB_SHARED_DIR
+  const auto file = std::filesystem::path(PATCHLAB_SHARED_DIR) / "reference/gb/cagd86.gbp";
+  if (std::filesystem::exists(file)) return std::make_shared<GBPatch>(read_gbp(file));
+#endif
+  // Without the shared folder: a net of the same shape (5 sides, degree 5) on a dome.
+  std::printf("# cagd86.gbp not found: using a synthetic 5-sided degree-5 net\n");
+  std::vector<Vec3> p(GBPatch::point_count(5, 5), Vec3(0, 0, 3));
+  GBPatch shape(5, 5, p);
+  for (int k = 0; k < 3; ++k)
+    for (int i = 0; i < 5; ++i)
+      for (int j = k; j <= 4 - k; ++j) {
+        const Vec2 a = shape.polygon().vertex(i - 1), b = shape.polygon().vertex(i);
+        const Vec2 q = (a + (j / 5.0) * (b - a)) * (1 - 0.2 * k);
+        p[shape.index(i, j, k)] = {10 * q.x, 10 * q.y, 1.0 * k};
+      }
+  return std::make_shared<GBPatch>(5, 5, std::move(p));
+}
+
+// density N of the regular pentagon gives 1 + 5 N (N + 1) / 2 samples.
+std::shared_ptr<const Tessellation> pentagon(int density) {
+  return std::make_shared<const Tessellation>(ConvexPolygonDomain::regular(5).tessellate(density));
+}
+
+}  // namespace
+
+void bench_gb(const Options& o) {
+  const auto patch = cagd86();
+  {
+    PatchEvaluator ev(patch, pentagon(o.quick ? 60 : 632));  // 1,000,141 samples
+    const double ms = median_ms(o.quick ? 2 : 7, [&] { ev.evaluate_all(); });
+    figure("gb_full_eval_msamples_per_s", ev.sample_count() / (ms * 1e3), "Msamples/s");
+  }
+  // An inner point of layer 1: it moves most of the patch.
+  const std::size_t k = patch->index(1, 2, 1);
+  {
+    PatchEvaluator ev(std::shared_ptr<Patch>(patch->clone()), pentagon(o.quick ? 30 : 200));
+    ev.prepare_influence(k);  // 100,501 samples
+    Vec3 p = ev.patch().control_point(k);
+    int step = 0;
+    const double ms = median_ms(o.quick ? 3 : 41, [&] {
+      p.z += (++step % 2 ? 1e-3 : -1e-3);
+      ev.move_control_point(k, p);
+    });
+    figure("gb_drag_ms_100k", ms, "ms");
+  }
+  {
+    PatchEvaluator ev(std::shared_ptr<Patch>(patch->clone()), pentagon(o.quick ? 60 : 632));
+    std::vector<double> t;
+    for (int r = 0; r < (o.quick ? 2 : 9); ++r) {
+      ev.evaluate_all();  // drops the cached columns
+      const auto a = std::chrono::steady_clock::now();
+      ev.prepare_influence(k);
+      const auto b = std::chrono::steady_clock::now();
+      t.push_back(std::chrono::duration<double, std::milli>(b - a).count());
+    }
+    std::nth_element(t.begin(), t.begin() + t.size() / 2, t.end());
+    figure("gb_drag_column_ms_1m", t[t.size() / 2], "ms");
+  }
+}
+
+}  // namespace pl::bench
