@@ -4,6 +4,7 @@
 
 #include "core/io/data_error.hpp"
 #include "core/network/face_ribbons.hpp"
+#include "core/network/gb_face.hpp"
 #include "core/network/gregory_face.hpp"
 
 namespace pl {
@@ -24,12 +25,17 @@ FacePatch build_face_patch(const Network& network, int face, FaceScheme scheme,
     std::iota(fp.patch_side.begin(), fp.patch_side.end(), 0);  // face side i = domain side i
     return fp;
   }
-  // GB faces (issue #4) are built from the same ribbons; until then say so rather than
-  // produce a surface that is not the one the file describes.
+  // GB faces (issue #4): independent-ribbon GB patch from the same ribbons, over the regular
+  // n-gon (convex faces) or a concave domain; face side i = domain side i.
   (void)network;
-  throw DataError(source, face_path(face),
-                  "GB faces are not available yet (this face has " +
-                      std::to_string(ribbons.sides.size()) + " sides and scheme gb)");
+  try {
+    fp.patch = gb_face_patch(ribbons);
+  } catch (const std::invalid_argument& e) {
+    throw DataError(source, face_path(face), std::string("cannot build the GB patch: ") + e.what());
+  }
+  fp.patch_side.resize(ribbons.sides.size());
+  std::iota(fp.patch_side.begin(), fp.patch_side.end(), 0);
+  return fp;
 }
 
 NetworkFilling fill_network(const Network& network, const NetworkTopology& topology,
