@@ -40,7 +40,7 @@ TEST(ClassicScenes, SampleScenesReadEvaluateAndRoundTrip) {
             << e.path() << " " << s.name << " sample " << k;
       }
   }
-  EXPECT_GE(files, 5);
+  EXPECT_GE(files, 7);
 }
 
 void expect_data_error(const std::string& patch_json, const std::string& where_part) {
@@ -75,6 +75,13 @@ TEST(ClassicScenes, BadDataNamesFileAndPlace) {
       "t": [[0, 1], [0, 1]], "data": [)" +
                         zeros + R"(], "lengths": "odd"})",
                     "patches[0].lengths");
+  expect_data_error(
+      R"({"type": "pair-join", "order": 1, "aux_degree": [3, 1], "aux": [[0,0,0],[0,1,0],
+      [1,0,0],[1,1,0],[2,0,0],[2,1,0],[3,0,0],[3,1,0]], "a": {"b1": [0], "c1": [1]}, "b": {"b1": [0], "c1": []}})",
+      "patches[0].b.c1");
+  expect_data_error(
+      R"({"type": "gap-fill", "q": {"degree": [3, 3], "size": [4, 4], "points": []}, "r": {}})",
+      "patches[0].q.points");
   expect_data_error(R"({"type": "bspline", "degree": [99, 1], "size": [2, 2], "points": []})",
                     "patches[0].degree[0]");
 }
