@@ -9,11 +9,38 @@
 
 namespace pl {
 
-// Scalar values d0, first d1 and second d2 derivatives of all B_j^d at t, d <= 62.
+// Scalar values d0, first d1 and second d2 derivatives of all B_j^d at t, d <= kMax. One
+// de Casteljau-like triangle: its rows d-2 and d-1 give the derivatives
+// (B_j^d)' = d (B_{j-1}^{d-1} - B_j^{d-1}), and likewise for the second derivative.
 struct BernsteinTable {
   static constexpr int kMax = 32;
   double d0[kMax + 1], d1[kMax + 1], d2[kMax + 1];
-  BernsteinTable(int degree, double t) { bernstein_all_d2(degree, t, d0, d1, d2); }
+  BernsteinTable(int degree, double t) {
+    const double s = 1 - t;
+    double r1[kMax + 1], r2[kMax + 1];
+    d0[0] = 1;
+    for (int n = 1; n <= degree; ++n) {
+      if (n == degree - 1)
+        for (int i = 0; i < n; ++i) r2[i] = d0[i];  // degree - 2
+      if (n == degree)
+        for (int i = 0; i < n; ++i) r1[i] = d0[i];  // degree - 1
+      double saved = 0;
+      for (int k = 0; k < n; ++k) {
+        const double tmp = d0[k];
+        d0[k] = saved + s * tmp;
+        saved = t * tmp;
+      }
+      d0[n] = saved;
+    }
+    const int d = degree;
+    for (int j = 0; j <= d; ++j) {
+      d1[j] = d >= 1 ? d * ((j > 0 ? r1[j - 1] : 0.0) - (j < d ? r1[j] : 0.0)) : 0.0;
+      d2[j] = d >= 2 ? d * (d - 1) *
+                           ((j >= 2 ? r2[j - 2] : 0.0) - 2 * (j >= 1 && j <= d - 1 ? r2[j - 1] : 0.0) +
+                            (j <= d - 2 ? r2[j] : 0.0))
+                     : 0.0;
+    }
+  }
   // B_j^d(t(u,v)) by the chain rule, t the argument jet the table was built at.
   Jet compose(int j, const Jet& t) const { return chain(t, d0[j], d1[j], d2[j]); }
 };

@@ -21,16 +21,6 @@ SurfaceJet times(const SurfaceJet& a, const Jet& b) {
           a.svv * b.f + 2.0 * b.fv * a.sv + a.p * b.fvv};
 }
 
-// sum_j c_j B_j(t) P_j as a vector jet from its t-derivatives q0, q1, q2 (chain rule).
-SurfaceJet compose(const Jet& t, const Vec3& q0, const Vec3& q1, const Vec3& q2) {
-  return {q0,
-          t.fu * q1,
-          t.fv * q1,
-          t.fuu * q1 + (t.fu * t.fu) * q2,
-          t.fuv * q1 + (t.fu * t.fv) * q2,
-          t.fvv * q1 + (t.fv * t.fv) * q2};
-}
-
 void add(SurfaceJet& a, const SurfaceJet& b, double w = 1.0) {
   a.p += w * b.p;
   a.su += w * b.su;
@@ -38,15 +28,6 @@ void add(SurfaceJet& a, const SurfaceJet& b, double w = 1.0) {
   a.suu += w * b.suu;
   a.suv += w * b.suv;
   a.svv += w * b.svv;
-}
-
-void add(SurfaceJet& a, const Vec3& c, const Jet& w) {
-  a.p += w.f * c;
-  a.su += w.fu * c;
-  a.sv += w.fv * c;
-  a.suu += w.fuu * c;
-  a.suv += w.fuv * c;
-  a.svv += w.fvv * c;
 }
 
 // Value moved by a first-order Taylor step delta (the vertex limit applied near the vertex).
@@ -100,6 +81,15 @@ GBPatch::GBPatch(int sides, int degree, std::vector<Vec3> points)
         m = Mu::Zero;
       mu_[k * (d + 1) + j] = m;
     }
+  rows_.resize(l);
+  for (int k = 0; k < l; ++k)
+    for (int j = 0; j <= d; ++j) {
+      const Mu m = mu(j, k);
+      if (m == Mu::Zero) continue;
+      const uint8_t g = m == Mu::Alpha ? 1 : m == Mu::Beta ? 2 : 0;
+      rows_[k].push_back({j, g, m == Mu::Half ? 0.5 : 1.0});
+    }
+  update_relative(0);
   grid_.resize(n_ * l * (d + 1));
   occurrences_.assign(size(), {});
   for (int i = 0; i < n_; ++i)
@@ -158,55 +148,91 @@ int GBPatch::vertex_at(Vec2 x) const {
   return -1;
 }
 
+namespace {
+// A vector-valued polynomial in (s, h) with its partial derivatives up to second order.
+struct SHJet {
+  Vec3 g{0}, gs{0}, gh{0}, gss{0}, gsh{0}, ghh{0};
+  void operator+=(const SHJet& b) {
+    g += b.g, gs += b.gs, gh += b.gh, gss += b.gss, gsh += b.gsh, ghh += b.ghh;
+  }
+};
+// The (u, v) jet of G(s(u,v), h(u,v)) by the chain rule.
+SurfaceJet to_uv(const SHJet& G, const Jet& s, const Jet& h) {
+  return {G.g,
+          s.fu * G.gs + h.fu * G.gh,
+          s.fv * G.gs + h.fv * G.gh,
+          (s.fu * s.fu) * G.gss + (2 * s.fu * h.fu) * G.gsh + (h.fu * h.fu) * G.ghh +
+              s.fuu * G.gs + h.fuu * G.gh,
+          (s.fu * s.fv) * G.gss + (s.fu * h.fv + s.fv * h.fu) * G.gsh + (h.fu * h.fv) * G.ghh +
+              s.fuv * G.gs + h.fuv * G.gh,
+          (s.fv * s.fv) * G.gss + (2 * s.fv * h.fv) * G.gsh + (h.fv * h.fv) * G.ghh +
+              s.fvv * G.gs + h.fvv * G.gh};
+}
+}  // namespace
+
+void GBPatch::set_control_point(std::size_t k, const Vec3& p) {
+  Patch::set_control_point(k, p);
+  update_relative(k);
+}
+
+void GBPatch::update_relative(std::size_t k) {
+  if (k == 0) {
+    relative_.resize(size());
+    for (std::size_t i = 0; i < size(); ++i) relative_[i] = points_[i] - points_[0];
+  } else {
+    relative_[k] = points_[k] - points_[0];
+  }
+}
+
 SurfaceJet GBPatch::evaluate_regular(Vec2 x) const {
+  // S = C_0 + sum of the ribbon weights times (P - C_0): the central weight needs no sum.
+  // Ribbon i splits into polynomial groups in (s_i, h_i): constant weights (C), alpha (A) and
+  // beta (B) ones. With beta_i = 1 - alpha_{i+1},
+  //   sum_i (C_i + alpha_i A_i + beta_i B_i) = sum_i (C_i + B_i) + sum_i alpha_i (A_i - B_{i-1}),
+  // so each ribbon needs two chain rules and one product with a rational weight.
   Local L;
   local(x, L);
   const int d = d_, l = l_;
   SurfaceJet S;
-  Jet total;  // sum of every ribbon weight; C_0 takes 1 - total
+  S.p = points_[0];
+  SurfaceJet A[kMaxSides], B[kMaxSides];
   for (int i = 0; i < n_; ++i) {
     const Jet &s = L.s[i], &h = L.h[i];
     const BernsteinTable bs(d, s.f), bh(d, h.f);
-    // Group the row by weight: 0 = constant (1/2 or 1), 1 = alpha, 2 = beta. Each group is a
-    // polynomial in s times one in h, so the s-sums are formed on scalars and composed once.
-    SurfaceJet T[3];
-    Jet tw[3];
+    SHJet G[3];  // 0: C (+ B below), 1: A, 2: B
     for (int k = 0; k < l; ++k) {
-      const Jet hk = bh.compose(k, h);
-      Vec3 q[3][3] = {};
-      double w[3][3] = {};
-      bool used[3] = {false, false, false};
+      Vec3 r0[3] = {Vec3(0), Vec3(0), Vec3(0)}, r1[3] = {Vec3(0), Vec3(0), Vec3(0)},
+           r2[3] = {Vec3(0), Vec3(0), Vec3(0)};
       const uint32_t* row = &grid_[(i * l + k) * (d + 1)];
-      for (int j = 0; j <= d; ++j) {
-        const Mu m = mu(j, k);
-        if (m == Mu::Zero) continue;
-        const int g = m == Mu::Alpha ? 1 : m == Mu::Beta ? 2 : 0;
-        const double c = m == Mu::Half ? 0.5 : 1.0;
-        const Vec3& P = points_[row[j]];
-        const double c0 = c * bs.d0[j], c1 = c * bs.d1[j], c2 = c * bs.d2[j];
-        q[g][0] += c0 * P;
-        q[g][1] += c1 * P;
-        q[g][2] += c2 * P;
-        w[g][0] += c0;
-        w[g][1] += c1;
-        w[g][2] += c2;
-        used[g] = true;
+      for (const RowEntry& e : rows_[k]) {
+        const Vec3& P = relative_[row[e.j]];
+        r0[e.group] += (e.c * bs.d0[e.j]) * P;
+        r1[e.group] += (e.c * bs.d1[e.j]) * P;
+        r2[e.group] += (e.c * bs.d2[e.j]) * P;
       }
-      for (int g = 0; g < 3; ++g) {
-        if (!used[g]) continue;
-        add(T[g], times(compose(s, q[g][0], q[g][1], q[g][2]), hk));
-        tw[g] += chain(s, w[g][0], w[g][1], w[g][2]) * hk;
+      const double h0 = bh.d0[k], h1 = bh.d1[k], h2 = bh.d2[k];
+      for (int g = 0; g < (d >= 3 && k < 2 ? 3 : 1); ++g) {
+        G[g].g += h0 * r0[g];
+        G[g].gs += h0 * r1[g];
+        G[g].gss += h0 * r2[g];
+        G[g].gh += h1 * r0[g];
+        G[g].gsh += h1 * r1[g];
+        G[g].ghh += h2 * r0[g];
       }
     }
-    add(S, T[0]);
-    total += tw[0];
     if (d >= 3) {
-      add(S, times(T[1], L.alpha[i]));
-      add(S, times(T[2], L.beta[i]));
-      total += tw[1] * L.alpha[i] + tw[2] * L.beta[i];
+      G[0] += G[2];
+      A[i] = to_uv(G[1], s, h);
+      B[i] = to_uv(G[2], s, h);
     }
+    add(S, to_uv(G[0], s, h));
   }
-  add(S, points_[0], Jet(1.0) - total);
+  if (d >= 3)
+    for (int i = 0; i < n_; ++i) {
+      SurfaceJet D = A[i];
+      add(D, B[params_.wrap(i - 1)], -1.0);
+      add(S, times(D, L.alpha[i]));
+    }
   return S;
 }
 

@@ -46,6 +46,7 @@ class GBPatch final : public Patch {
   std::string type() const override { return "gb"; }
   const Domain& domain() const override { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
+  void set_control_point(std::size_t k, const Vec3& p) override;
   void basis(Vec2 x, std::span<Jet> out) const override;
   SurfaceJet evaluate(Vec2 x) const override;
   void influence(std::size_t k, std::span<const Vec2> xs, std::span<Jet> out) const override;
@@ -76,7 +77,17 @@ class GBPatch final : public Patch {
   int n_, d_, l_;
   ConvexPolygonDomain domain_;
   PolygonParameters params_;
-  std::vector<Mu> mu_;          // [k * (d+1) + j]
+  void update_relative(std::size_t k);
+
+  std::vector<Mu> mu_;  // [k * (d+1) + j]
+  // The non-zero weights of row k: position j, group (0 constant, 1 alpha, 2 beta), factor c.
+  struct RowEntry {
+    int j;
+    uint8_t group;
+    double c;
+  };
+  std::vector<std::vector<RowEntry>> rows_;
+  std::vector<Vec3> relative_;  // P_k - C_0: evaluate() needs no central weight
   std::vector<uint32_t> grid_;  // [(i * l + k) * (d+1) + j] -> stored index
   // Where each stored point appears in the ribbon grids: (i, j, k) with a non-zero mu.
   struct Occurrence {
