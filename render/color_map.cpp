@@ -59,6 +59,7 @@ const std::vector<double>& curvature_values(const SurfaceMesh& mesh, CurvatureKi
 }
 
 double ColorRange::normalized(double value) const {
+  if (std::isnan(value)) return 0.5;  // no information: the neutral colour, not an extreme
   const double t = value < 0 ? 0.5 - 0.5 * value / lo : 0.5 + 0.5 * value / hi;
   return std::clamp(t, 0.0, 1.0);
 }
