@@ -17,28 +17,36 @@ struct BernsteinTable {
   double d0[kMax + 1], d1[kMax + 1], d2[kMax + 1];
   BernsteinTable(int degree, double t) {
     const double s = 1 - t;
-    double r1[kMax + 1], r2[kMax + 1];
-    d0[0] = 1;
-    for (int n = 1; n <= degree; ++n) {
-      if (n == degree - 1)
-        for (int i = 0; i < n; ++i) r2[i] = d0[i];  // degree - 2
-      if (n == degree)
-        for (int i = 0; i < n; ++i) r1[i] = d0[i];  // degree - 1
-      double saved = 0;
-      for (int k = 0; k < n; ++k) {
-        const double tmp = d0[k];
-        d0[k] = saved + s * tmp;
-        saved = t * tmp;
-      }
-      d0[n] = saved;
-    }
     const int d = degree;
+    // One step of the triangle: from degree n-1 values in `in` to degree n in `out`.
+    const auto step = [s, t](const double* in, double* out, int n) {
+      out[0] = s * in[0];
+      for (int k = 1; k < n; ++k) out[k] = t * in[k - 1] + s * in[k];
+      out[n] = t * in[n - 1];
+    };
+    double r1[kMax + 1], r2[kMax + 1];  // degree d-1 and d-2
+    if (d == 0) {
+      d0[0] = 1, d1[0] = d2[0] = 0;
+      return;
+    }
+    r2[0] = 1;
+    for (int n = 1; n <= d - 2; ++n) {  // in place, from the top down
+      r2[n] = t * r2[n - 1];
+      for (int k = n - 1; k >= 1; --k) r2[k] = t * r2[k - 1] + s * r2[k];
+      r2[0] *= s;
+    }
+    if (d >= 2)
+      step(r2, r1, d - 1);
+    else
+      r1[0] = 1;
+    step(r1, d0, d);
     for (int j = 0; j <= d; ++j) {
-      d1[j] = d >= 1 ? d * ((j > 0 ? r1[j - 1] : 0.0) - (j < d ? r1[j] : 0.0)) : 0.0;
-      d2[j] = d >= 2 ? d * (d - 1) *
-                           ((j >= 2 ? r2[j - 2] : 0.0) - 2 * (j >= 1 && j <= d - 1 ? r2[j - 1] : 0.0) +
-                            (j <= d - 2 ? r2[j] : 0.0))
-                     : 0.0;
+      d1[j] = d * ((j > 0 ? r1[j - 1] : 0.0) - (j < d ? r1[j] : 0.0));
+      d2[j] = d >= 2
+                  ? d * (d - 1) *
+                        ((j >= 2 ? r2[j - 2] : 0.0) - 2 * (j >= 1 && j <= d - 1 ? r2[j - 1] : 0.0) +
+                         (j <= d - 2 ? r2[j] : 0.0))
+                  : 0.0;
     }
   }
   // B_j^d(t(u,v)) by the chain rule, t the argument jet the table was built at.

@@ -3,6 +3,8 @@
 #include <cassert>
 #include <stdexcept>
 
+#include "core/math/scratch.hpp"
+
 namespace pl {
 
 namespace {
@@ -30,7 +32,8 @@ Jet PolygonParameters::side_area(int m, Vec2 x) const {
 void PolygonParameters::evaluate(Vec2 x, std::span<Jet> lambda, std::span<Jet> s,
                                  std::span<Jet> h) const {
   const int n = n_;
-  Jet L[kMaxSides], w[kMaxSides], prefix[kMaxSides + 1], suffix[kMaxSides + 1];
+  Scratch<Jet, kMaxSides> L, w;
+  Scratch<Jet, kMaxSides + 1> prefix, suffix;
   for (int m = 0; m < n; ++m) L[m] = side_area(m, x);
   // w_i omits the two sides meeting at v_i: side i and side i+1.
   prefix[0] = Jet(1.0);

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "core/math/bernstein_jets.hpp"
+#include "core/math/scratch.hpp"
 
 namespace pl {
 
@@ -40,7 +41,7 @@ void shift(Jet& j, Vec2 delta) {
 }  // namespace
 
 struct GBPatch::Local {
-  Jet s[kMaxSides], h[kMaxSides], alpha[kMaxSides], beta[kMaxSides];
+  Scratch<Jet, kMaxSides> s, h, alpha, beta;
 };
 
 std::size_t GBPatch::point_count(int n, int d) {
@@ -81,13 +82,13 @@ GBPatch::GBPatch(int sides, int degree, std::vector<Vec3> points)
         m = Mu::Zero;
       mu_[k * (d + 1) + j] = m;
     }
-  rows_.resize(l);
+  rows_.resize(3 * l);
   for (int k = 0; k < l; ++k)
     for (int j = 0; j <= d; ++j) {
       const Mu m = mu(j, k);
       if (m == Mu::Zero) continue;
       const uint8_t g = m == Mu::Alpha ? 1 : m == Mu::Beta ? 2 : 0;
-      rows_[k].push_back({j, g, m == Mu::Half ? 0.5 : 1.0});
+      rows_[k * 3 + g].push_back({j, g, m == Mu::Half ? 0.5 : 1.0});
     }
   update_relative(0);
   grid_.resize(n_ * l * (d + 1));
@@ -129,7 +130,7 @@ std::vector<BezierCurve> GBPatch::boundary_curves() const {
 }
 
 void GBPatch::local(Vec2 x, Local& out) const {
-  params_.evaluate(x, {}, std::span(out.s, n_), std::span(out.h, n_));
+  params_.evaluate(x, {}, std::span(out.s.data(), n_), std::span(out.h.data(), n_));
   if (d_ < 3) return;  // no corner weights
   for (int i = 0; i < n_; ++i) {
     const Jet& prev = out.h[params_.wrap(i - 1)];
@@ -161,12 +162,12 @@ SurfaceJet to_uv(const SHJet& G, const Jet& s, const Jet& h) {
   return {G.g,
           s.fu * G.gs + h.fu * G.gh,
           s.fv * G.gs + h.fv * G.gh,
-          (s.fu * s.fu) * G.gss + (2 * s.fu * h.fu) * G.gsh + (h.fu * h.fu) * G.ghh +
-              s.fuu * G.gs + h.fuu * G.gh,
+          (s.fu * s.fu) * G.gss + (2 * s.fu * h.fu) * G.gsh + (h.fu * h.fu) * G.ghh + s.fuu * G.gs +
+              h.fuu * G.gh,
           (s.fu * s.fv) * G.gss + (s.fu * h.fv + s.fv * h.fu) * G.gsh + (h.fu * h.fv) * G.ghh +
               s.fuv * G.gs + h.fuv * G.gh,
-          (s.fv * s.fv) * G.gss + (2 * s.fv * h.fv) * G.gsh + (h.fv * h.fv) * G.ghh +
-              s.fvv * G.gs + h.fvv * G.gh};
+          (s.fv * s.fv) * G.gss + (2 * s.fv * h.fv) * G.gsh + (h.fv * h.fv) * G.ghh + s.fvv * G.gs +
+              h.fvv * G.gh};
 }
 }  // namespace
 
@@ -195,29 +196,30 @@ SurfaceJet GBPatch::evaluate_regular(Vec2 x) const {
   const int d = d_, l = l_;
   SurfaceJet S;
   S.p = points_[0];
-  SurfaceJet A[kMaxSides], B[kMaxSides];
+  Scratch<SurfaceJet, kMaxSides> A, B;
   for (int i = 0; i < n_; ++i) {
     const Jet &s = L.s[i], &h = L.h[i];
     const BernsteinTable bs(d, s.f), bh(d, h.f);
     SHJet G[3];  // 0: C (+ B below), 1: A, 2: B
     for (int k = 0; k < l; ++k) {
-      Vec3 r0[3] = {Vec3(0), Vec3(0), Vec3(0)}, r1[3] = {Vec3(0), Vec3(0), Vec3(0)},
-           r2[3] = {Vec3(0), Vec3(0), Vec3(0)};
       const uint32_t* row = &grid_[(i * l + k) * (d + 1)];
-      for (const RowEntry& e : rows_[k]) {
-        const Vec3& P = relative_[row[e.j]];
-        r0[e.group] += (e.c * bs.d0[e.j]) * P;
-        r1[e.group] += (e.c * bs.d1[e.j]) * P;
-        r2[e.group] += (e.c * bs.d2[e.j]) * P;
-      }
       const double h0 = bh.d0[k], h1 = bh.d1[k], h2 = bh.d2[k];
-      for (int g = 0; g < (d >= 3 && k < 2 ? 3 : 1); ++g) {
-        G[g].g += h0 * r0[g];
-        G[g].gs += h0 * r1[g];
-        G[g].gss += h0 * r2[g];
-        G[g].gh += h1 * r0[g];
-        G[g].gsh += h1 * r1[g];
-        G[g].ghh += h2 * r0[g];
+      for (int g = 0; g < 3; ++g) {
+        const auto& entries = rows_[k * 3 + g];
+        if (entries.empty()) continue;
+        Vec3 r0(0), r1(0), r2(0);
+        for (const RowEntry& e : entries) {
+          const Vec3& P = relative_[row[e.j]];
+          r0 += (e.c * bs.d0[e.j]) * P;
+          r1 += (e.c * bs.d1[e.j]) * P;
+          r2 += (e.c * bs.d2[e.j]) * P;
+        }
+        G[g].g += h0 * r0;
+        G[g].gs += h0 * r1;
+        G[g].gss += h0 * r2;
+        G[g].gh += h1 * r0;
+        G[g].gsh += h1 * r1;
+        G[g].ghh += h2 * r0;
       }
     }
     if (d >= 3) {
@@ -321,9 +323,10 @@ void GBPatch::basis_vertex(int v, std::span<Jet> out) const {
   // C h^k lambda_{m-1}^(d-j) lambda_m^j / (lambda_{m-1} + lambda_m)^k: homogeneous of degree
   // d - k in two vanishing functions, so only degree <= 2 leaves a (second-order) trace.
   const Vec2 x = domain_.vertex(v), theta = domain_.interior_point() - x;
-  Jet lambda[kMaxSides];
+  Scratch<Jet, kMaxSides> lambda;
   Local L;
-  params_.evaluate(x, std::span(lambda, n_), std::span(L.s, n_), std::span(L.h, n_));
+  params_.evaluate(x, std::span(lambda.data(), n_), std::span(L.s.data(), n_),
+                   std::span(L.h.data(), n_));
   const int a = params_.wrap(v), b = params_.wrap(v + 1), d = d_, l = l_;
   const auto alpha = [&](int i) {  // smooth alpha_i (never i = b)
     const Jet& prev = L.h[params_.wrap(i - 1)];

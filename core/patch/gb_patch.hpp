@@ -80,7 +80,8 @@ class GBPatch final : public Patch {
   void update_relative(std::size_t k);
 
   std::vector<Mu> mu_;  // [k * (d+1) + j]
-  // The non-zero weights of row k: position j, group (0 constant, 1 alpha, 2 beta), factor c.
+  // The non-zero weights of row k and group g (0 constant, 1 alpha, 2 beta) at rows_[3k + g]:
+  // position j and constant factor c.
   struct RowEntry {
     int j;
     uint8_t group;
