@@ -1,0 +1,121 @@
+#include "core/patch/catmull_clark_limit.hpp"
+
+#include <opensubdiv/far/patchMap.h>
+#include <opensubdiv/far/patchTableFactory.h>
+#include <opensubdiv/far/stencilTableFactory.h>
+#include <opensubdiv/far/topologyDescriptor.h>
+
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <algorithm>
+#include <map>
+#include <stdexcept>
+#include <string>
+
+namespace pl {
+
+namespace Far = OpenSubdiv::Far;
+namespace Sdc = OpenSubdiv::Sdc;
+
+struct CatmullClarkLimit::Osd {
+  OpenMesh::PolyMesh_ArrayKernelT<> mesh;  // the control mesh topology
+  std::unique_ptr<Far::TopologyRefiner> refiner;
+  std::unique_ptr<Far::PatchTable> patches;
+  std::unique_ptr<Far::PatchMap> map;
+  // Stencils from the base vertices to every refined vertex and local (end-cap) point, indexed
+  // like the patch table's point indices.
+  std::unique_ptr<const Far::StencilTableReal<double>> stencils;
+};
+
+CatmullClarkLimit::CatmullClarkLimit(std::size_t n, const std::vector<std::vector<int>>& faces)
+    : vertex_count_(n), faces_(faces), osd_(std::make_unique<Osd>()) {
+  if (faces_.empty()) throw std::invalid_argument("a Catmull-Clark mesh needs at least one face");
+  std::vector<int> used(n, 0);
+  for (std::size_t f = 0; f < faces_.size(); ++f) {
+    if (faces_[f].size() != 4)
+      throw std::invalid_argument("face " + std::to_string(f) + " has " +
+                                  std::to_string(faces_[f].size()) +
+                                  " vertices: only quad control meshes are supported");
+    for (int v : faces_[f]) {
+      if (v < 0 || static_cast<std::size_t>(v) >= n)
+        throw std::invalid_argument("face " + std::to_string(f) + ": vertex " + std::to_string(v) +
+                                    " does not exist (" + std::to_string(n) + " vertices)");
+      ++used[v];
+    }
+  }
+  for (std::size_t v = 0; v < n; ++v)
+    if (!used[v])
+      throw std::invalid_argument("vertex " + std::to_string(v) + " is used by no face");
+  // OpenMesh refuses non-manifold and inconsistently oriented faces (add_face fails).
+  auto& mesh = osd_->mesh;
+  std::vector<OpenMesh::VertexHandle> vh(n);
+  for (std::size_t v = 0; v < n; ++v) vh[v] = mesh.add_vertex({0, 0, 0});
+  for (std::size_t f = 0; f < faces_.size(); ++f) {
+    std::vector<OpenMesh::VertexHandle> loop;
+    for (int v : faces_[f]) loop.push_back(vh[v]);
+    if (!mesh.add_face(loop).is_valid())
+      throw std::invalid_argument("face " + std::to_string(f) +
+                                  " makes the mesh non-manifold or flips its orientation");
+  }
+
+  std::vector<int> counts(faces_.size(), 4), indices;
+  for (const auto& f : faces_) indices.insert(indices.end(), f.begin(), f.end());
+  Far::TopologyDescriptor desc;
+  desc.numVertices = static_cast<int>(n);
+  desc.numFaces = static_cast<int>(faces_.size());
+  desc.numVertsPerFace = counts.data();
+  desc.vertIndicesPerFace = indices.data();
+  Sdc::Options sdc;
+  sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
+  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+  osd_->refiner.reset(Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, sdc)));
+  if (!osd_->refiner) throw std::invalid_argument("OpenSubdiv rejected the control mesh topology");
+
+  Far::PatchTableFactory::Options po(10);
+  po.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
+  po.useInfSharpPatch = true;
+  po.patchPrecisionDouble = true;
+  osd_->refiner->RefineAdaptive(po.GetRefineAdaptiveOptions());
+  osd_->patches.reset(Far::PatchTableFactory::Create(*osd_->refiner, po));
+  osd_->map = std::make_unique<Far::PatchMap>(*osd_->patches);
+
+  using StencilFactory = Far::StencilTableFactoryReal<double>;
+  StencilFactory::Options so;
+  so.generateIntermediateLevels = true;
+  so.generateOffsets = true;
+  so.generateControlVerts = true;  // stencil i is point i of the patch table
+  std::unique_ptr<const Far::StencilTableReal<double>> refined(
+      StencilFactory::Create(*osd_->refiner, so));
+  if (const auto* local = osd_->patches->GetLocalPointStencilTable<double>()) {
+    osd_->stencils.reset(
+        StencilFactory::AppendLocalPointStencilTable(*osd_->refiner, refined.get(), local));
+  } else {
+    osd_->stencils = std::move(refined);
+  }
+}
+
+CatmullClarkLimit::~CatmullClarkLimit() = default;
+
+bool CatmullClarkLimit::boundary_vertex(int v) const {
+  return osd_->mesh.is_boundary(OpenMesh::VertexHandle(v));
+}
+
+std::vector<std::pair<int, Jet>> CatmullClarkLimit::basis(int face, Vec2 uv) const {
+  // Points outside the face (finite differences at its border) use the face's own patch there.
+  const double u = std::clamp(uv.x, 0.0, 1.0), v = std::clamp(uv.y, 0.0, 1.0);
+  const Far::PatchTable::PatchHandle* h = osd_->map->FindPatch(face, u, v);
+  if (!h) throw std::logic_error("OpenSubdiv found no patch for a face parameter");
+  double w[20], wu[20], wv[20], wuu[20], wuv[20], wvv[20];
+  osd_->patches->EvaluateBasis(*h, uv.x, uv.y, w, wu, wv, wuu, wuv, wvv);
+  const Far::ConstIndexArray cvs = osd_->patches->GetPatchVertices(*h);
+  std::map<int, Jet> acc;
+  for (int i = 0; i < cvs.size(); ++i) {
+    const Jet wi(w[i], wu[i], wv[i], wuu[i], wuv[i], wvv[i]);
+    const auto s = osd_->stencils->GetStencil(cvs[i]);
+    const int* idx = s.GetVertexIndices();
+    const double* sw = s.GetWeights();
+    for (int k = 0; k < s.GetSize(); ++k) acc[idx[k]] += wi * sw[k];
+  }
+  return {acc.begin(), acc.end()};
+}
+
+}  // namespace pl

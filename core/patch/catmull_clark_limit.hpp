@@ -1,0 +1,44 @@
+// Exact Catmull-Clark limit surface of a quad control mesh, evaluated with OpenSubdiv
+// (Far::TopologyRefiner adaptive refinement, Far::PatchTable + Far::PatchMap, Gregory end caps at
+// extraordinary vertices). The control mesh topology is held in an OpenMesh polygon mesh, which
+// also validates it (manifold, consistently oriented). Weights are expressed over the base
+// control vertices, so the surface is linear in them (the Patch contract).
+//
+// Face parameterisation (OpenSubdiv's): face f = (v0, v1, v2, v3), u runs v0 -> v1, v from
+// v0 -> v3, so S_u x S_v points to the side from which the loop is counter-clockwise.
+#pragma once
+
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "core/math/jet.hpp"
+#include "core/math/vec.hpp"
+
+namespace pl {
+
+class CatmullClarkLimit {
+ public:
+  // Throws std::invalid_argument: not quads, vertex index out of range, non-manifold or
+  // inconsistently oriented faces, unused vertices.
+  CatmullClarkLimit(std::size_t vertex_count, const std::vector<std::vector<int>>& faces);
+  ~CatmullClarkLimit();
+  CatmullClarkLimit(const CatmullClarkLimit&) = delete;
+  CatmullClarkLimit& operator=(const CatmullClarkLimit&) = delete;
+
+  std::size_t vertex_count() const { return vertex_count_; }
+  std::size_t face_count() const { return faces_.size(); }
+  const std::vector<std::vector<int>>& faces() const { return faces_; }
+  bool boundary_vertex(int v) const;
+
+  // The non-zero limit basis functions of face f at (u, v) in [0,1]^2: (base vertex, jet).
+  std::vector<std::pair<int, Jet>> basis(int face, Vec2 uv) const;
+
+ private:
+  struct Osd;
+  std::size_t vertex_count_;
+  std::vector<std::vector<int>> faces_;
+  std::unique_ptr<Osd> osd_;
+};
+
+}  // namespace pl

@@ -1,0 +1,74 @@
+// Catmull-Clark limit surfaces as patches (catmull_clark_limit.hpp does the OpenSubdiv work).
+//
+// CatmullClarkFacePatch: the limit surface over one base quad, domain [0,1]^2 = the face's
+// (u, v). Its control points are all base vertices; only the face's neighbourhood has non-zero
+// weights, so drags are sparse.
+//
+// CatmullClarkPatch: the whole surface as one scene entry ("catmull-clark"). As a Patch it is an
+// atlas: face f covers the strip u in [f/F, (f+1)/F] of [0,1]^2, so every generic tool works on
+// it; scene_pieces() (patch_pieces.hpp) shows it as one CatmullClarkFacePatch per base face,
+// each with its own full tessellation.
+#pragma once
+
+#include <memory>
+
+#include "core/domain/unit_square.hpp"
+#include "core/patch/catmull_clark_limit.hpp"
+#include "core/patch/patch.hpp"
+
+namespace pl {
+
+class CatmullClarkFacePatch final : public Patch {
+ public:
+  CatmullClarkFacePatch(std::shared_ptr<const CatmullClarkLimit> limit, int face,
+                        std::vector<Vec3> vertices);
+
+  std::unique_ptr<Patch> clone() const override {
+    return std::make_unique<CatmullClarkFacePatch>(*this);
+  }
+  std::string type() const override { return "catmull-clark-face"; }
+  const Domain& domain() const override { return domain_; }
+  ControlPointKind kind(std::size_t k) const override;
+  void basis(Vec2 x, std::span<Jet> out) const override;
+  SurfaceJet evaluate(Vec2 x) const override;
+  void influence(std::size_t k, std::span<const Vec2> xs, std::span<Jet> out) const override;
+  // Exact for a regular boundary face side (a uniform cubic B-spline segment in Bézier form);
+  // otherwise the Bézier curve on the side's limit points at t = 0, 1/3, 2/3, 1 interpolated
+  // (the limit side of an irregular face is not one polynomial).
+  std::vector<BezierCurve> boundary_curves() const override;
+
+  int face() const { return face_; }
+
+ private:
+  std::shared_ptr<const CatmullClarkLimit> limit_;
+  int face_;
+  std::vector<char> support_;  // vertices that can have non-zero weight on this face
+  UnitSquareDomain domain_;
+};
+
+class CatmullClarkPatch final : public Patch {
+ public:
+  // Throws std::invalid_argument for a mesh CatmullClarkLimit refuses.
+  CatmullClarkPatch(std::vector<Vec3> vertices, std::vector<std::vector<int>> faces);
+
+  std::unique_ptr<Patch> clone() const override {
+    return std::make_unique<CatmullClarkPatch>(*this);
+  }
+  std::string type() const override { return "catmull-clark"; }
+  const Domain& domain() const override { return domain_; }
+  ControlPointKind kind(std::size_t k) const override;
+  void basis(Vec2 x, std::span<Jet> out) const override;
+  SurfaceJet evaluate(Vec2 x) const override;
+  // The atlas's sides cross many faces: the Bézier curve on the limit points at the face
+  // breaks (not exact; the interface has no piecewise curve).
+  std::vector<BezierCurve> boundary_curves() const override;
+
+  const CatmullClarkLimit& limit() const { return *limit_; }
+  std::vector<std::unique_ptr<CatmullClarkFacePatch>> face_patches() const;
+
+ private:
+  std::shared_ptr<const CatmullClarkLimit> limit_;
+  UnitSquareDomain domain_;
+};
+
+}  // namespace pl
