@@ -2,6 +2,8 @@
 // >= 0 on the domain, vanishing together only at the twins' corner).
 #pragma once
 
+#include <cmath>
+
 #include "core/math/jet.hpp"
 
 namespace pl {
@@ -14,7 +16,7 @@ inline constexpr double kTwinCornerGuard = 1e-30;
 
 inline Jet twin_weight(const Jet& a, const Jet& b) {
   const Jet s = a + b;
-  if (s.f < kTwinCornerGuard) return Jet(0.5);
+  if (std::fabs(s.f) < kTwinCornerGuard) return Jet(0.5);
   return a / s;
 }
 

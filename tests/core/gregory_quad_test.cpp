@@ -101,6 +101,10 @@ TEST(GregoryQuad, CornersTakeTheLimits) {
     const Vec2 du = p.domain().side_point(s, 1) - corner;  // side direction in the domain
     const Vec3 d_side = du.x * j.su + du.y * j.sv;
     EXPECT_LT(test::max_abs(d_side - along.point(0)), 1e-13);
+    // Second derivative along the side: the boundary curve's (the guarded twist does not
+    // enter it).
+    const Vec3 dd = du.x * du.x * j.suu + 2 * du.x * du.y * j.suv + du.y * du.y * j.svv;
+    EXPECT_LT(test::max_abs(dd - along.derivative().point(0)), 1e-12);
     const Vec2 dv = p.domain().side_point((s + 3) % 4, 0) - corner;  // back along side s-1
     EXPECT_LT(test::max_abs(dv.x * j.su + dv.y * j.sv + back.point(1)), 1e-13);
     for (double eps : {1e-4, 1e-7}) {

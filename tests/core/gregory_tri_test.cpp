@@ -148,6 +148,8 @@ TEST(GregoryTri, CornersTakeTheLimits) {
     const SurfaceJet j = p.evaluate(corner);
     const Vec2 du = p.domain().side_point(s, 1) - corner;
     EXPECT_LT(test::max_abs(du.x * j.su + du.y * j.sv - curves[s].derivative().point(0)), 1e-13);
+    const Vec3 dd = du.x * du.x * j.suu + 2 * du.x * du.y * j.suv + du.y * du.y * j.svv;
+    EXPECT_LT(test::max_abs(dd - curves[s].derivative().derivative().point(0)), 1e-12);
     const Vec2 dv = p.domain().side_point((s + 2) % 3, 0) - corner;
     EXPECT_LT(test::max_abs(dv.x * j.su + dv.y * j.sv + curves[(s + 2) % 3].derivative().point(1)),
               1e-13);

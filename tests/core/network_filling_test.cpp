@@ -156,18 +156,17 @@ TEST(NetworkFilling, NonCoplanarEndTangentsAreProjectedAndReported) {
       EXPECT_TRUE(test::finite_jet(fp.patch->evaluate(x)));
 }
 
-TEST(NetworkFilling, GbFacesAreReportedAsNotAvailableYet) {
+// Gregory and GB faces are built from the same ribbons, so a face switched to GB still meets its
+// Gregory neighbours G1 and interpolates its edges.
+TEST(NetworkFilling, AGbFaceAmongGregoryFacesKeepsG1) {
   Network n = test::sphere_blob(true);
   n.faces[3].scheme = FaceScheme::GB;
-  const NetworkTopology topo = validate_network(n, "file.json");
-  try {
-    fill_network(n, topo, std::nullopt, "file.json");
-    FAIL() << "expected a DataError";
-  } catch (const DataError& e) {
-    EXPECT_EQ(e.where(), "network.faces[3]");
-    EXPECT_EQ(e.source(), "file.json");
-    EXPECT_NE(std::string(e.what()).find("GB faces are not available yet"), std::string::npos);
-  }
+  const Filled f = fill(n);
+  EXPECT_NE(f.filling.faces[3].patch->type().rfind("gregory", 0), 0u);
+  EXPECT_EQ(f.filling.faces[2].patch->type(), "gregory-tri");
+  const auto faces = test::surfaces(f.filling);
+  EXPECT_LT(test::max_boundary_deviation(f.net, f.topo, faces) / test::network_size(f.net), 1e-12);
+  EXPECT_LT(test::max_g1_angle_deg(f.topo, faces), 1e-6);
 }
 
 TEST(NetworkFilling, DegenerateGeometryIsADataErrorNamingTheObject) {
