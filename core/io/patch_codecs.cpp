@@ -2,6 +2,7 @@
 
 #include "core/io/bezier_patch_codec.hpp"
 #include "core/io/bspline_patch_codec.hpp"
+#include "core/io/catmull_clark_codec.hpp"
 #include "core/io/coons_network_codec.hpp"
 #include "core/io/gap_fill_codec.hpp"
 #include "core/io/gb_patch_codec.hpp"
@@ -26,6 +27,7 @@ std::span<const PatchCodec> patch_codecs() {
       PatchCodec{"coons-network", read_coons_network, write_coons_network},
       PatchCodec{"pair-join", read_pair_join, write_pair_join},
       PatchCodec{"gap-fill", read_gap_fill, write_gap_fill},
+      PatchCodec{"catmull-clark", read_catmull_clark, write_catmull_clark},
   };
   return codecs;
 }

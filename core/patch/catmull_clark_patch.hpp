@@ -5,9 +5,11 @@
 // weights, so drags are sparse.
 //
 // CatmullClarkPatch: the whole surface as one scene entry ("catmull-clark"). As a Patch it is an
-// atlas: face f covers the strip u in [f/F, (f+1)/F] of [0,1]^2, so every generic tool works on
-// it; scene_pieces() (patch_pieces.hpp) shows it as one CatmullClarkFacePatch per base face,
-// each with its own full tessellation.
+// atlas: face f covers the strip u in [f/F, (f+1)/F] of [0,1]^2, so every generic tool (export,
+// analyze, the evaluator) works on it unchanged. A strip gets density/F samples across; showing
+// each face with its own full tessellation needs evaluate_scene to make one surface per
+// face_patches() entry, and SceneEvaluation / scene_points to map surfaces to scene patches by a
+// stored index instead of by position (see the issue #7 report).
 #pragma once
 
 #include <memory>

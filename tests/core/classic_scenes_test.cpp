@@ -40,7 +40,7 @@ TEST(ClassicScenes, SampleScenesReadEvaluateAndRoundTrip) {
             << e.path() << " " << s.name << " sample " << k;
       }
   }
-  EXPECT_GE(files, 7);
+  EXPECT_GE(files, 8);
 }
 
 void expect_data_error(const std::string& patch_json, const std::string& where_part) {
@@ -82,6 +82,12 @@ TEST(ClassicScenes, BadDataNamesFileAndPlace) {
   expect_data_error(
       R"({"type": "gap-fill", "q": {"degree": [3, 3], "size": [4, 4], "points": []}, "r": {}})",
       "patches[0].q.points");
+  expect_data_error(
+      R"({"type": "catmull-clark", "vertices": [[0,0,0],[1,0,0],[1,1,0]], "faces": [[0,1,2,3]]})",
+      "patches[0].faces[0][3]");
+  expect_data_error(R"({"type": "catmull-clark", "vertices": [[0,0,0],[1,0,0],[1,1,0],[0,1,0]],
+      "faces": [[0,1,2,3],[0,1,2,3]]})",
+                    "patches[0].faces");
   expect_data_error(R"({"type": "bspline", "degree": [99, 1], "size": [2, 2], "points": []})",
                     "patches[0].degree[0]");
 }

@@ -1,0 +1,40 @@
+// {"type": "catmull-clark", "vertices": [points], "faces": [[a, b, c, d], ...]}: a quad control
+// mesh, faces counter-clockwise seen from outside (see catmull_clark_patch.hpp).
+#include "core/io/catmull_clark_codec.hpp"
+
+#include "core/patch/catmull_clark_patch.hpp"
+
+namespace pl {
+
+std::unique_ptr<Patch> read_catmull_clark(const JsonNode& node) {
+  node.allow_only({"type", "name", "vertices", "faces"});
+  const std::vector<Vec3> vertices = node.at("vertices").points();
+  const JsonNode fn = node.at("faces");
+  std::vector<std::vector<int>> faces;
+  const auto items = fn.items();
+  if (items.empty()) fn.fail("a Catmull-Clark mesh needs at least one face");
+  for (const JsonNode& f : items) {
+    std::vector<int> loop;
+    for (const JsonNode& v : f.items(4)) {
+      const long long i = v.integer();
+      if (i < 0 || i >= static_cast<long long>(vertices.size()))
+        v.fail("vertex " + std::to_string(i) + " does not exist (" +
+               std::to_string(vertices.size()) + " vertices)");
+      loop.push_back(static_cast<int>(i));
+    }
+    faces.push_back(std::move(loop));
+  }
+  try {
+    return std::make_unique<CatmullClarkPatch>(vertices, faces);
+  } catch (const std::invalid_argument& e) {
+    fn.fail(e.what());  // orientation, manifoldness, unused vertices
+  }
+}
+
+void write_catmull_clark(const Patch& patch, nlohmann::json& out) {
+  const auto& cc = dynamic_cast<const CatmullClarkPatch&>(patch);
+  out["vertices"] = points_json(cc.control_points());
+  out["faces"] = cc.limit().faces();
+}
+
+}  // namespace pl
