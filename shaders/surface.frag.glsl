@@ -88,6 +88,9 @@ void main() {
     float angle = acos(clamp(dot(n, u_isophote_direction), -1.0, 1.0));
     float s = angle / 3.14159265 * u_isophote_count;
     float a = line_coverage(s, u_isophote_width);
+    // Levels 0 and count are single points (normal exactly along or against the light), not
+    // lines: leave them out instead of drawing a blot.
+    a *= smoothstep(0.25, 0.5, s) * smoothstep(0.25, 0.5, u_isophote_count - s);
     color = mix(color, vec3(0.05, 0.05, 0.07), a * 0.9);
   }
   frag_color = vec4(color, 1.0);
