@@ -15,6 +15,7 @@
 //    GB corner weights divide h's by each other).
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -34,8 +35,10 @@ class PolygonParameters {
   const Vec2& vertex(int i) const { return vertices_[wrap(i)]; }
   int wrap(int i) const { return ((i % n_) + n_) % n_; }
 
-  // Each span has sides() entries; any of them may be empty to skip that output.
-  void evaluate(Vec2 x, std::span<Jet> lambda, std::span<Jet> s, std::span<Jet> h) const;
+  // Each span has sides() entries; any of them may be empty to skip that output. s and h are
+  // computed only for the sides whose bit is set in `sides` (the others are left untouched).
+  void evaluate(Vec2 x, std::span<Jet> lambda, std::span<Jet> s, std::span<Jet> h,
+                uint32_t sides = ~0u) const;
 
  private:
   Jet side_area(int m, Vec2 x) const;  // L_m(x), > 0 inside

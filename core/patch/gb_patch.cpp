@@ -93,12 +93,16 @@ GBPatch::GBPatch(int sides, int degree, std::vector<Vec3> points)
   update_relative(0);
   grid_.resize(n_ * l * (d + 1));
   occurrences_.assign(size(), {});
+  ribbons_of_.assign(size(), 0);
   for (int i = 0; i < n_; ++i)
     for (int k = 0; k < l; ++k)
       for (int j = 0; j <= d; ++j) {
         const std::size_t s = index(i, j, k);
         grid_[(i * l + k) * (d + 1) + j] = static_cast<uint32_t>(s);
-        if (mu(j, k) != Mu::Zero) occurrences_[s].push_back({i, j, k});
+        if (mu(j, k) != Mu::Zero) {
+          occurrences_[s].push_back({i, j, k});
+          ribbons_of_[s] |= 1u << i;
+        }
       }
 }
 
@@ -129,16 +133,26 @@ std::vector<BezierCurve> GBPatch::boundary_curves() const {
   return curves;
 }
 
-void GBPatch::local(Vec2 x, Local& out) const {
-  params_.evaluate(x, {}, std::span(out.s.data(), n_), std::span(out.h.data(), n_));
+void GBPatch::local(Vec2 x, Local& out, uint32_t ribbons) const {
+  // Ribbon i needs s_i, h_i, alpha_i and (for beta_i) alpha_{i+1}; alpha_i needs h_{i-1}, h_i.
+  const int n = n_;
+  const uint32_t all = (1u << n) - 1;
+  const auto rotl = [&](uint32_t m) { return ((m << 1) | (m >> (n - 1))) & all; };
+  const auto rotr = [&](uint32_t m) { return ((m >> 1) | ((m & 1u) << (n - 1))) & all; };
+  ribbons &= all;
+  const uint32_t alphas = d_ >= 3 ? ribbons | rotl(ribbons) : 0;  // ribbon i or i-1 is asked
+  const uint32_t sides = ribbons | alphas | rotr(alphas);
+  params_.evaluate(x, {}, std::span(out.s.data(), n), std::span(out.h.data(), n), sides);
   if (d_ < 3) return;  // no corner weights
-  for (int i = 0; i < n_; ++i) {
+  for (int i = 0; i < n; ++i) {
+    if (!(alphas >> i & 1u)) continue;
     const Jet& prev = out.h[params_.wrap(i - 1)];
     out.alpha[i] = prev / (prev + out.h[i]);
   }
   // beta_i = h_{i+1} / (h_{i+1} + h_i) = 1 - alpha_{i+1}: the two weights of a shared corner
   // point then sum to one exactly.
-  for (int i = 0; i < n_; ++i) out.beta[i] = Jet(1.0) - out.alpha[params_.wrap(i + 1)];
+  for (int i = 0; i < n; ++i)
+    if (ribbons >> i & 1u) out.beta[i] = Jet(1.0) - out.alpha[params_.wrap(i + 1)];
 }
 
 int GBPatch::vertex_at(Vec2 x) const {
@@ -268,7 +282,7 @@ void GBPatch::basis_regular(Vec2 x, std::span<Jet> out) const {
 
 Jet GBPatch::influence_regular(std::size_t k, Vec2 x) const {
   Local L;
-  local(x, L);
+  local(x, L, k == 0 ? ~0u : ribbons_of_[k]);
   if (k == 0) {  // the central weight needs every ribbon
     Jet total;
     for (int i = 0; i < n_; ++i) {

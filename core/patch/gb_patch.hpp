@@ -67,7 +67,8 @@ class GBPatch final : public Patch {
 
  private:
   struct Local;  // per-point parameters, shared by evaluate, basis and influence
-  void local(Vec2 x, Local& out) const;
+  // Parameters of the ribbons whose bit is set (with what their corner weights need).
+  void local(Vec2 x, Local& out, uint32_t ribbons = ~0u) const;
   SurfaceJet evaluate_regular(Vec2 x) const;
   void basis_regular(Vec2 x, std::span<Jet> out) const;
   Jet influence_regular(std::size_t k, Vec2 x) const;
@@ -95,6 +96,7 @@ class GBPatch final : public Patch {
     int i, j, k;
   };
   std::vector<std::vector<Occurrence>> occurrences_;
+  std::vector<uint32_t> ribbons_of_;  // bit i: the stored point has a non-zero weight in ribbon i
 };
 
 }  // namespace pl
