@@ -12,6 +12,7 @@
 #include "core/analysis/scene_analysis.hpp"
 #include "core/domain/tessellation_cache.hpp"
 #include "core/eval/scene_surfaces.hpp"
+#include "core/io/data_error.hpp"
 #include "core/io/scene_io.hpp"
 #include "core/network/face_ribbons.hpp"
 #include "core/network/gb_face.hpp"
@@ -178,6 +179,72 @@ TEST(GBNetwork, SceneAnalysis) {
   expect_analysis("gb-hole-filling.json", std::nullopt);
   expect_analysis("gb-hole-filling.json", FaceScheme::GB);
   expect_analysis("gb-concave-l.json", std::nullopt);
+}
+
+// One n-gon face (n = 3..12, a wavy rim) filled as GB: finite everywhere, boundary interpolated.
+TEST(GBNetwork, SingleFacesForEverySideCountAreFinite) {
+  for (int n = 3; n <= 12; ++n) {
+    Scene scene;
+    Network net;
+    for (int i = 0; i < n; ++i) {
+      const double a = 2 * M_PI * i / n;
+      net.vertices.push_back({std::cos(a), std::sin(a), 0.2 * std::cos(2 * a)});
+    }
+    for (int i = 0; i < n; ++i) {
+      const Vec3 p = net.vertices[i], q = net.vertices[(i + 1) % n];
+      NetworkEdge e;
+      e.v = {i, (i + 1) % n};
+      e.handles = {p + (q - p) / 3.0 + Vec3(0, 0, 0.1), p + 2.0 * (q - p) / 3.0 - Vec3(0, 0, 0.05)};
+      net.edges.push_back(e);
+    }
+    NetworkFace f;
+    for (int i = 0; i < n; ++i) f.loop.push_back(i);
+    net.faces.push_back(f);
+    scene.network = net;
+    TessellationCache cache;
+    const SceneSurfaces ss = evaluate_scene(scene, 16, FaceScheme::GB, cache, "ngon");
+    const SceneReport r = analyze_scene(scene, ss);
+    ASSERT_EQ(r.patches.size(), 1u);
+    EXPECT_EQ(r.patches[0].type, "gb-ribbons");
+    EXPECT_EQ(r.patches[0].nonfinite_samples, 0u) << n;
+    EXPECT_LT(r.patches[0].max_boundary_deviation, 1e-12) << n;
+  }
+}
+
+// A deep U face (with a quad in its notch): mean value coordinates fail on it, so filling it is
+// a DataError naming the face, never non-finite samples.
+TEST(GBNetwork, UnfillableConcaveFaceIsADataErrorNamingTheFace) {
+  const std::vector<Vec2> u = {{0, 0}, {3, 0}, {3, 2}, {2, 2}, {2, 0.8}, {1, 0.8}, {1, 2}, {0, 2}};
+  Scene scene;
+  Network net;
+  for (const Vec2& p : u) net.vertices.push_back({p.x, p.y, 0.1 * p.x * p.y});
+  const auto edge = [&](int a, int b) {
+    const Vec3 p = net.vertices[a], q = net.vertices[b];
+    NetworkEdge e;
+    e.v = {a, b};
+    e.handles = {p + (q - p) / 3.0, p + 2.0 * (q - p) / 3.0};
+    net.edges.push_back(e);
+  };
+  NetworkFace f;
+  for (int i = 0; i < 8; ++i) {
+    edge(i, (i + 1) % 8);
+    f.loop.push_back(i);
+  }
+  edge(3, 6);
+  net.faces.push_back(f);
+  NetworkFace notch;
+  notch.loop = {5, 4, 3, 6};
+  net.faces.push_back(notch);
+  scene.network = net;
+  TessellationCache cache;
+  try {
+    evaluate_scene(scene, 8, std::nullopt, cache, "u.json");
+    FAIL() << "expected a DataError";
+  } catch (const DataError& e) {
+    EXPECT_EQ(e.source(), "u.json");
+    EXPECT_EQ(e.where(), "network.faces[0]");
+    std::printf("%s\n", e.what());
+  }
 }
 
 }  // namespace
