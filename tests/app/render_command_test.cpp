@@ -1,0 +1,97 @@
+// `patchlab render`: wrong usage exits 2 before any work, bad files exit 1 naming the file, and
+// a real render writes a PNG of the requested size (skipped when no GL context can be made).
+#include <gtest/gtest.h>
+#include <stb_image.h>  // implementation compiled into Debian's libstb
+
+#include "cli_test_util.hpp"
+#include "render/egl_context.hpp"
+
+namespace pl::test {
+namespace {
+
+const std::string kSaddle = std::string(PATCHLAB_SOURCE_DIR) + "/assets/bezier-saddle.json";
+
+bool have_gl(std::string& why) {
+  try {
+    EglContext context;
+    return true;
+  } catch (const GlContextError& e) {
+    why = e.what();
+    return false;
+  }
+}
+
+TEST(RenderCommand, WrongUsageExits2) {
+  TempDir dir;
+  const std::string out = (dir / "out.png").string();
+  for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+           {"render", kSaddle},                                        // no -o
+           {"render", kSaddle, "-o", (dir / "out.jpg").string()},      // not a PNG
+           {"render", kSaddle, "-o", out, "--size", "0x10"},           // empty image
+           {"render", kSaddle, "-o", out, "--size", "5000x100"},       // beyond 4096
+           {"render", kSaddle, "-o", out, "--size", "800"},            // not WxH
+           {"render", kSaddle, "-o", out, "--mode", "mean+gaussian"},  // two base modes
+           {"render", kSaddle, "-o", out, "--mode", "wireframe"},      // unknown mode
+           {"render", kSaddle, "-o", out, "--range", "0:1"},           // not around zero
+           {"render", kSaddle, "-o", out, "--compare", "--scheme", "gb"},
+       }) {
+    const CliResult r = cli(args);
+    EXPECT_EQ(r.code, kExitUsage) << args.back() << ": " << r.err;
+    EXPECT_NE(r.err.find("usage:"), std::string::npos);
+    EXPECT_FALSE(std::filesystem::exists(out));
+  }
+}
+
+TEST(RenderCommand, BadInputExits1NamingTheFile) {
+  TempDir dir;
+  const auto broken = dir.file("broken.json", R"({"patchlab": 1, "patches": [{"type": "x"}]})");
+  const auto camera = dir.file("camera.json", R"({"pitch_deg": 120})");
+  const std::string out = (dir / "out.png").string();
+  CliResult r = cli({"render", broken.string(), "-o", out});
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_NE(r.err.find("broken.json"), std::string::npos) << r.err;
+  r = cli({"render", kSaddle, "-o", out, "--view", camera.string()});
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_NE(r.err.find("camera.json: pitch_deg"), std::string::npos) << r.err;
+  r = cli({"render", kSaddle, "-o", out, "--compare"});  // no network to fill two ways
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(RenderCommand, WritesAPngOfTheRequestedSize) {
+  std::string why;
+  if (!have_gl(why)) GTEST_SKIP() << "no OpenGL: " << why;
+  TempDir dir;
+  const auto camera = dir.file("camera.json", R"({"yaw_deg": 30, "pitch_deg": 50,
+      "projection": "orthographic"})");
+  for (const std::vector<std::string>& extra : std::vector<std::vector<std::string>>{
+           {"--mode", "mean+isophotes+control-net", "--view", "top"},
+           {"--mode", "zebra", "--transparent", "--view", camera.string()},
+       }) {
+    const auto out = dir / "out.png";
+    std::vector<std::string> args{"render", kSaddle,   "-o",        out.string(),
+                                  "--size", "200x150", "--density", "8"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const CliResult r = cli(args);
+    ASSERT_EQ(r.code, kExitOk) << r.err;
+    int w = 0, h = 0, n = 0;
+    stbi_uc* pixels = stbi_load(out.string().c_str(), &w, &h, &n, 4);
+    ASSERT_NE(pixels, nullptr);
+    EXPECT_EQ(w, 200);
+    EXPECT_EQ(h, 150);
+    // Something was drawn: a good share of pixels differ clearly from the top-left corner
+    // (backdrop or clear colour).
+    int drawn = 0;
+    for (int i = 0; i < w * h; ++i) {
+      int diff = 0;
+      for (int k = 0; k < 4; ++k) diff += std::abs(int(pixels[i * 4 + k]) - int(pixels[k]));
+      if (diff > 30) ++drawn;
+    }
+    EXPECT_GT(drawn, w * h / 10) << extra[1];
+    if (extra[2] == "--transparent") EXPECT_EQ(pixels[3], 0);
+    stbi_image_free(pixels);
+  }
+}
+
+}  // namespace
+}  // namespace pl::test
