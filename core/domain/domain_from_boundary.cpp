@@ -28,8 +28,9 @@ std::vector<Vec2> project_to_best_fit_plane(const std::vector<Vec3>& corners) {
   }
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
   const Eigen::Vector3d ev = eig.eigenvalues();  // ascending
-  if (!(ev(1) > 1e-24 * std::max(1.0, ev(2))))
-    throw std::invalid_argument("the face's corners are collinear");
+  // The covariance carries rounding noise of about 1e-16 ev(2): a second eigenvalue below
+  // 1e-12 ev(2) (width under 1e-6 of the length) is a collinear loop.
+  if (!(ev(1) > 1e-12 * ev(2))) throw std::invalid_argument("the face's corners are collinear");
   Vec3 normal(eig.eigenvectors()(0, 0), eig.eigenvectors()(1, 0), eig.eigenvectors()(2, 0));
   // Orientation from the loop itself (Newell), not from the eigen solver's arbitrary sign.
   Vec3 newell(0);
