@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <set>
+#include <utility>
 
 #include "core/io/data_error.hpp"
 #include "core/network/face_ribbons.hpp"
@@ -38,28 +39,34 @@ NetworkEditor::NetworkEditor(Network network, std::optional<FaceScheme> scheme, 
 }
 
 NetworkEditor::Update NetworkEditor::refresh(const std::vector<int>& vertices) {
-  // Everything below is computed into temporaries first, so a DataError leaves the editor as
-  // it was.
-  std::vector<std::pair<int, TangentPlane>> planes;
-  for (int v : vertices) planes.emplace_back(v, vertex_tangent_plane(network_, topology_, v));
-  std::vector<TangentPlane> all_planes = planes_;
-  for (const auto& [v, p] : planes) all_planes[v] = p;
+  // The new planes and fields are written in place over saved old values, which are put back
+  // if a DataError interrupts, so a failed move leaves the editor as it was. Nothing here is
+  // proportional to the size of the network.
   std::set<int> edges, faces;
   for (int v : vertices)
     for (int e : topology_.vertex_edges[v]) edges.insert(e);
-  std::vector<std::pair<int, EdgeCrossTangents>> cross;
-  std::vector<EdgeCrossTangents> all_cross = cross_;
-  for (int e : edges) {
-    all_cross[e] = edge_cross_tangents(network_, topology_, all_planes, e);
-    for (const EdgeUse& use : topology_.edge_faces[e]) faces.insert(use.face);
-  }
+  std::vector<std::pair<int, TangentPlane>> old_planes;
+  std::vector<std::pair<int, EdgeCrossTangents>> old_cross;
   std::vector<std::pair<int, FacePatch>> patches;
-  for (int f : faces)
-    patches.emplace_back(
-        f, build_face_patch(network_, f, schemes_[f],
-                            face_ribbons(network_, topology_, all_cross, f), source_));
-  planes_ = std::move(all_planes);
-  cross_ = std::move(all_cross);
+  try {
+    for (int v : vertices) {
+      TangentPlane p = vertex_tangent_plane(network_, topology_, v);
+      old_planes.emplace_back(v, std::exchange(planes_[v], p));
+    }
+    for (int e : edges) {
+      EdgeCrossTangents c = edge_cross_tangents(network_, topology_, planes_, e);
+      old_cross.emplace_back(e, std::exchange(cross_[e], std::move(c)));
+      for (const EdgeUse& use : topology_.edge_faces[e]) faces.insert(use.face);
+    }
+    for (int f : faces)
+      patches.emplace_back(f,
+                           build_face_patch(network_, f, schemes_[f],
+                                            face_ribbons(network_, topology_, cross_, f), source_));
+  } catch (...) {
+    for (auto& [v, p] : old_planes) planes_[v] = p;
+    for (auto& [e, c] : old_cross) cross_[e] = std::move(c);
+    throw;
+  }
   Update up;
   for (auto& [f, fp] : patches) {
     PatchEvaluator& ev = *evaluators_[f];

@@ -42,7 +42,7 @@ class NetworkEditor {
 
  private:
   // Recomputes the planes at `vertices`, the fields of their edges and the faces using those
-  // edges. On a DataError nothing derived has changed yet; the caller restores the network.
+  // edges. On a DataError the derived data is restored; the caller restores the network.
   Update refresh(const std::vector<int>& vertices);
 
   Network network_;
