@@ -1,0 +1,85 @@
+// `patchlab --bench-drag [FILE]`: a scripted drag of the network vertex with the most edges
+// (of a generated 2 x 2 quad network unless FILE is given) in a 1280x720 window, each step a
+// full editor frame (coarse re-evaluation, upload, draw, UI, swap, glFinish). Prints
+//   figure editor_drag_fps, editor_frame_ms_p50, editor_frame_ms_p95, editor_settle_ms
+// where settle is the time from the release to the first frame showing the fine surfaces.
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+
+#include "app/editor/editor.hpp"
+#include "render/gl.hpp"
+
+namespace pl {
+
+namespace {
+constexpr int kWarmupFrames = 5;
+constexpr int kDragFrames = 180;
+
+double percentile(std::vector<double> v, double q) {
+  std::sort(v.begin(), v.end());
+  const std::size_t i = std::min(v.size() - 1, static_cast<std::size_t>(q * (v.size() - 1) + 0.5));
+  return v[i];
+}
+}  // namespace
+
+int Editor::run_drag_benchmark() {
+  if (!doc_.scene().network || doc_.scene().network->vertices.empty()) {
+    std::fprintf(stderr, "patchlab: --bench-drag needs a scene with a curve network\n");
+    return 1;
+  }
+  const Network& net = *doc_.scene().network;
+  std::vector<int> valence(net.vertices.size(), 0);
+  for (const NetworkEdge& e : net.edges) ++valence.at(e.v[0]), ++valence.at(e.v[1]);
+  const int vertex = int(std::max_element(valence.begin(), valence.end()) - valence.begin());
+  for (int i = 0; i < kWarmupFrames; ++i) {
+    glfwPollEvents();
+    frame();
+  }
+  glFinish();
+  const PointRef ref = PointRef::vertex(vertex);
+  const Vec3 start = point_position(doc_.scene(), ref);
+  const double amplitude = 0.15 * std::max(camera_.scene_radius, 1e-9);
+  doc_.begin_drag({ref});
+  std::vector<double> ms;
+  auto t_begin = Clock::now();
+  for (int k = 0; k < kDragFrames; ++k) {
+    const auto t0 = Clock::now();
+    const double a = 2 * 3.141592653589793 * k / 90.0;
+    doc_.drag_to(
+        {start + amplitude * Vec3(std::sin(a), 0.5 * std::sin(2 * a), 0.6 * std::cos(a) - 0.6)});
+    glfwPollEvents();
+    frame();
+    glFinish();
+    ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+  }
+  const double total = std::chrono::duration<double>(Clock::now() - t_begin).count();
+  doc_.end_drag();
+  const auto release = Clock::now();
+  int settle_frames = 0;
+  do {
+    glfwPollEvents();
+    frame();
+    glFinish();
+    ++settle_frames;
+  } while (!main_view_->settled() && settle_frames < 100);
+  const double settle = std::chrono::duration<double, std::milli>(Clock::now() - release).count();
+  std::size_t samples = 0;
+  for (const SurfaceMesh& m : main_view_->fine().draw().surfaces) samples += m.positions.size();
+  std::printf(
+      "# drag of vertex %d, %d frames at %dx%d, densities %d (drag) / %d (rest), "
+      "%zu fine samples\n",
+      vertex, kDragFrames, options_.width, options_.height, prefs_.coarse_density,
+      prefs_.fine_density, samples);
+  std::printf("figure editor_drag_fps %.1f fps\n", kDragFrames / total);
+  std::printf("figure editor_frame_ms_p50 %.2f ms\n", percentile(ms, 0.5));
+  std::printf("figure editor_frame_ms_p95 %.2f ms\n", percentile(ms, 0.95));
+  std::printf("figure editor_settle_ms %.1f ms\n", settle);
+  std::fflush(stdout);
+  return 0;
+}
+
+}  // namespace pl

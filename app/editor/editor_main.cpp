@@ -1,0 +1,108 @@
+#include "app/editor/editor_main.hpp"
+
+#include <charconv>
+
+#include "app/cli/load_input.hpp"
+#include "app/editor/editor.hpp"
+#include "app/editor/logic/editor_paths.hpp"
+#include "app/editor/logic/grid_scene.hpp"
+#include "app/editor/logic/point_names.hpp"
+#include "core/io/data_error.hpp"
+
+namespace pl {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+bool parse_size(const std::string& v, int& w, int& h) {
+  const auto x = v.find('x');
+  if (x == std::string::npos) return false;
+  auto num = [](const std::string& s, int& out) {
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+    return ec == std::errc() && end == s.data() + s.size() && out >= 64 && out <= 8192;
+  };
+  return num(v.substr(0, x), w) && num(v.substr(x + 1), h);
+}
+
+}  // namespace
+
+int run_editor(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
+  (void)out;
+  EditorOptions o;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&]() -> const std::string* { return i + 1 < args.size() ? &args[++i] : nullptr; };
+    if (a == "--bench-drag") {
+      o.bench_drag = true;
+    } else if (a == "--debug-point") {
+      const std::string* v = value();
+      o.debug_point = v ? parse_point_name(*v) : std::nullopt;
+      if (!o.debug_point) {
+        err << "patchlab: --debug-point takes a point name such as \"vertex 2\"\n";
+        return 2;
+      }
+    } else if (a == "--size") {
+      const std::string* v = value();
+      if (!v || !parse_size(*v, o.width, o.height)) {
+        err << "patchlab: --size takes WxH (64 to 8192 each)\n";
+        return 2;
+      }
+    } else if (a.rfind("--", 0) == 0) {
+      err << "patchlab: unknown editor option " << a << "\n"
+          << "usage: patchlab [FILE] [--size WxH] [--bench-drag] [--debug-point NAME]\n";
+      return 2;
+    } else if (!o.file) {
+      o.file = a;
+    } else {
+      err << "patchlab: the editor opens one FILE\n";
+      return 2;
+    }
+  }
+  if (o.bench_drag && !args.empty() && args.size() <= 2) o.width = 1280, o.height = 720;
+
+  // Load before opening a window, so a bad file is reported like the CLI does.
+  Scene scene;
+  fs::path path;
+  try {
+    if (o.file) {
+      scene = load_input(*o.file);
+      if (o.file->extension() == ".json") path = *o.file;
+    } else if (o.bench_drag) {
+      scene = make_grid_network_scene(2, 2);
+    } else {
+      const auto def = default_scene_path(executable_path());
+      if (!def) {
+        err << "patchlab: cannot find assets/default.json next to the executable\n";
+        return 1;
+      }
+      scene = load_input(*def);
+      path = *def;
+    }
+  } catch (const DataError& e) {
+    err << "patchlab: " << e.what() << "\n";
+    return 1;
+  }
+
+  std::optional<fs::path> ini;
+  if (!o.bench_drag)
+    if (const auto dir = state_dir()) {
+      std::error_code ec;
+      fs::create_directories(*dir, ec);
+      if (!ec) ini = *dir / "imgui.ini";
+    }
+  try {
+    GlWindow window(o.width, o.height, "PatchLab", ini.value_or(fs::path()));
+    Editor editor(window, o);
+    editor.load(Document(std::move(scene), path));
+    return o.bench_drag ? editor.run_drag_benchmark() : editor.run();
+  } catch (const WindowError& e) {
+    err << "patchlab: " << e.what() << "\n";
+    return 1;
+  } catch (const std::runtime_error& e) {
+    err << "patchlab: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace pl

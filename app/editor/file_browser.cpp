@@ -1,0 +1,109 @@
+#include "app/editor/file_browser.hpp"
+
+#include <imgui.h>
+
+#include <cstring>
+#include <system_error>
+
+namespace pl {
+
+namespace fs = std::filesystem;
+
+void FileBrowser::open(const std::string& title, const std::string& action, fs::path dir,
+                       std::vector<std::string> extensions, std::string default_extension,
+                       std::string name) {
+  title_ = title;
+  action_ = action;
+  dir_ = std::move(dir);
+  extensions_ = std::move(extensions);
+  default_extension_ = std::move(default_extension);
+  std::snprintf(name_, sizeof name_, "%s", name.c_str());
+  selected_ = -1;
+  open_request_ = true;
+  refresh();
+}
+
+void FileBrowser::refresh() {
+  listing_ = list_directory(dir_, extensions_);
+}
+
+std::optional<fs::path> FileBrowser::draw() {
+  const std::string id = title_ + "###file_browser";
+  if (open_request_) {
+    ImGui::OpenPopup(id.c_str());
+    open_request_ = false;
+  }
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x * 0.5f, vp->Pos.y + vp->Size.y * 0.5f),
+                          ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSize(ImVec2(vp->Size.x * 0.55f, vp->Size.y * 0.6f), ImGuiCond_Appearing);
+  std::optional<fs::path> chosen;
+  if (!ImGui::BeginPopupModal(id.c_str(), nullptr, ImGuiWindowFlags_NoSavedSettings)) return chosen;
+  if (ImGui::Button("Up") && dir_.has_parent_path()) {
+    dir_ = dir_.parent_path();
+    refresh();
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Home"))
+    if (const char* home = std::getenv("HOME")) {
+      dir_ = home;
+      refresh();
+    }
+  ImGui::SameLine();
+  ImGui::TextDisabled("%s", dir_.string().c_str());
+  std::string filter;
+  for (const std::string& e : extensions_) {
+    if (!filter.empty()) filter += ' ';
+    filter += '*';
+    filter += e;
+  }
+  const float footer = ImGui::GetFrameHeightWithSpacing() * 2.2f;
+  ImGui::BeginChild("listing", ImVec2(0, -footer), true);
+  if (!listing_.error.empty())
+    ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", listing_.error.c_str());
+  std::optional<fs::path> enter;
+  for (int i = 0; i < static_cast<int>(listing_.entries.size()); ++i) {
+    const DirEntry& e = listing_.entries[i];
+    const std::string label = (e.directory ? "[dir]  " : "       ") + e.name;
+    if (ImGui::Selectable(label.c_str(), selected_ == i, ImGuiSelectableFlags_AllowDoubleClick)) {
+      selected_ = i;
+      if (e.directory) {
+        if (ImGui::IsMouseDoubleClicked(0)) enter = dir_ / e.name;
+      } else {
+        std::snprintf(name_, sizeof name_, "%s", e.name.c_str());
+        if (ImGui::IsMouseDoubleClicked(0)) chosen = dir_ / e.name;
+      }
+    }
+  }
+  ImGui::EndChild();
+  if (enter) {
+    dir_ = enter->lexically_normal();
+    selected_ = -1;
+    refresh();
+  }
+  ImGui::SetNextItemWidth(-ImGui::CalcTextSize(action_.c_str()).x * 2 - 120);
+  const bool typed_enter = ImGui::InputTextWithHint("##name", "file name", name_, sizeof name_,
+                                                    ImGuiInputTextFlags_EnterReturnsTrue);
+  ImGui::SameLine();
+  ImGui::TextDisabled("%s", filter.c_str());
+  if ((ImGui::Button(action_.c_str(), ImVec2(110, 0)) || typed_enter) && name_[0] != '\0') {
+    const fs::path p = resolve_typed_name(dir_, name_, default_extension_);
+    std::error_code ec;
+    if (fs::is_directory(p, ec)) {
+      dir_ = p;
+      name_[0] = '\0';
+      refresh();
+    } else {
+      chosen = p;
+    }
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Cancel", ImVec2(110, 0)) ||
+      ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape)))
+    ImGui::CloseCurrentPopup();
+  if (chosen) ImGui::CloseCurrentPopup();
+  ImGui::EndPopup();
+  return chosen;
+}
+
+}  // namespace pl

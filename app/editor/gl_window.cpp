@@ -1,0 +1,106 @@
+#include "app/editor/gl_window.hpp"
+
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include "app/editor/theme.hpp"
+#include "render/gl.hpp"
+
+namespace pl {
+
+namespace {
+std::string last_glfw_error;
+void on_glfw_error(int, const char* description) {
+  last_glfw_error = description;
+}
+}  // namespace
+
+GlWindow::GlWindow(int width, int height, const std::string& title,
+                   const std::filesystem::path& ini_file)
+    : ini_file_(ini_file.string()) {
+  glfwSetErrorCallback(on_glfw_error);
+  if (!glfwInit())
+    throw WindowError("cannot open a window (" + last_glfw_error +
+                      "); the editor needs a display, the sub-commands do not");
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  // No multisampling: llvmpipe (CPU rendering) pays for every sample, and the renderer's lines
+  // and points are anti-aliased in their shaders already.
+  glfwWindowHint(GLFW_SAMPLES, 0);
+  glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
+  window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+  if (!window_) {
+    glfwTerminate();
+    throw WindowError("cannot create an OpenGL 3.3 core window (" + last_glfw_error + ")");
+  }
+  glfwMakeContextCurrent(window_);
+  glfwSwapInterval(0);  // the loop waits for events itself; vsync would cap drags under Xvfb
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  // Never the working directory: the layout lives under $XDG_STATE_HOME/patchlab, or nowhere.
+  io.IniFilename = ini_file_.empty() ? nullptr : ini_file_.c_str();
+  io.ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard;
+  apply_theme();
+  ImGui_ImplGlfw_InitForOpenGL(window_, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+  imgui_ready_ = true;
+}
+
+GlWindow::~GlWindow() {
+  if (imgui_ready_) {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+  }
+  if (window_) glfwDestroyWindow(window_);
+  glfwTerminate();
+}
+
+void GlWindow::set_title(const std::string& title) {
+  glfwSetWindowTitle(window_, title.c_str());
+}
+
+float GlWindow::content_scale() const {
+  float x = 1, y = 1;
+  glfwGetWindowContentScale(window_, &x, &y);
+  return std::max(x, y) > 0 ? std::max(x, y) : 1.0f;
+}
+
+void GlWindow::apply_ui_scale(float scale) {
+  ImGuiIO& io = ImGui::GetIO();
+  io.Fonts->Clear();
+  ImFontConfig config;
+  config.SizePixels = 13.0f * scale;
+  config.OversampleH = config.OversampleV = 1;
+  config.PixelSnapH = true;
+  io.Fonts->AddFontDefault(&config);
+  ImGui_ImplOpenGL3_DestroyFontsTexture();
+  ImGui_ImplOpenGL3_CreateFontsTexture();
+  ImGui::GetStyle() = ImGuiStyle();
+  apply_theme();
+  ImGui::GetStyle().ScaleAllSizes(scale);
+}
+
+void GlWindow::begin_frame() {
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+}
+
+void GlWindow::end_frame() {
+  ImGui::Render();
+  int w = 0, h = 0;
+  glfwGetFramebufferSize(window_, &w, &h);
+  glViewport(0, 0, w, h);
+  glDisable(GL_SCISSOR_TEST);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  glfwSwapBuffers(window_);
+}
+
+}  // namespace pl

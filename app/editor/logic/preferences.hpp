@@ -1,0 +1,33 @@
+// The editor's preferences, kept in $XDG_CONFIG_HOME/patchlab/preferences.ini as "key = value"
+// lines. Unknown keys and malformed values are ignored (a newer or hand-edited file never stops
+// the editor). GUI-free and unit-tested.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "render/display_settings.hpp"
+
+namespace pl {
+
+struct Preferences {
+  DisplaySettings display;
+  int fine_density = 48;    // after a drag settles
+  int coarse_density = 16;  // while dragging
+  double ui_scale = 0;      // 0: from the monitor's content scale
+  bool show_probe = true;
+  int screenshot_width = 1920, screenshot_height = 1080;
+  bool screenshot_transparent = false;
+  std::string last_directory;
+};
+
+Preferences default_preferences();  // isophotes on, control net and curves shown
+std::string preferences_to_text(const Preferences& p);
+Preferences preferences_from_text(const std::string& text);
+
+// Missing or unreadable file: the defaults.
+Preferences load_preferences(const std::filesystem::path& file);
+// Atomic; returns false (and keeps the old file) on failure.
+bool save_preferences(const std::filesystem::path& file, const Preferences& p);
+
+}  // namespace pl
