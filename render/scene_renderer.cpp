@@ -88,19 +88,18 @@ void SceneRenderer::draw(const GpuScene& scene, const Camera& camera,
     glUniformMatrix4fv(points_.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
     glUniform2f(points_.uniform("u_viewport_size"), float(v.width), float(v.height));
     glUniform1f(points_.uniform("u_size"), 9.0f * s);
-    glUniform1f(points_.uniform("u_depth_bias"), kOverlayDepthBias * 4);
+    glUniform1f(points_.uniform("u_depth_bias"), 0.0f);
     // Boundary, Inner, Twin, Central: the core's ControlPointKind order.
     const float kinds[12] = {0.95f, 0.62f, 0.10f, 0.20f, 0.55f, 0.95f,
                              0.85f, 0.25f, 0.75f, 0.20f, 0.75f, 0.35f};
     glUniform3fv(points_.uniform("u_kind_colors"), 4, kinds);
-    // Hidden points first, faint; then the visible ones on top.
-    glDepthFunc(GL_GREATER);
-    glDepthMask(GL_FALSE);
-    glUniform1f(points_.uniform("u_alpha"), kHiddenAlpha);
-    scene.net_points().draw(GL_POINTS);
-    glDepthFunc(GL_LEQUAL);
+    // Points are drawn over everything: they are what a designer grabs, and a depth-tested
+    // disc is cut in half wherever the surface passes near its point. The net's lines still
+    // show what lies behind the surface.
+    glDisable(GL_DEPTH_TEST);
     glUniform1f(points_.uniform("u_alpha"), 1.0f);
     scene.net_points().draw(GL_POINTS);
+    glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_TRUE);
   }
   glDisable(GL_BLEND);
