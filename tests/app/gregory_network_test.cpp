@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -73,6 +74,31 @@ TEST_P(GregoryScenes, ExportWritesEveryFaceWithUnitNormals) {
   EXPECT_EQ(objects, e.faces);
   EXPECT_EQ(vn, v);
   EXPECT_GT(v, 0u);
+}
+
+// Every network scene of assets/, as written and with --scheme gregory: the Gregory faces
+// among them interpolate their edges and are finite everywhere.
+TEST(GregoryScenes, GregoryFacesOfEveryNetworkAssetAreFiniteAndInterpolate) {
+  int gregory_faces = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(asset(""))) {
+    if (entry.path().extension() != ".json") continue;
+    const std::string text = slurp(entry.path());
+    if (text.find("\"network\"") == std::string::npos) continue;
+    for (const bool override_scheme : {false, true}) {
+      std::vector<std::string> args{"analyze", entry.path().string(), "--json", "--density", "8"};
+      if (override_scheme) args.insert(args.end(), {"--scheme", "gregory"});
+      const CliResult r = cli(args);
+      ASSERT_EQ(r.code, kExitOk) << entry.path() << r.err;
+      const auto report = nlohmann::json::parse(r.out);
+      for (const auto& p : report["patches"]) {
+        if (p["type"].get<std::string>().rfind("gregory", 0) != 0) continue;
+        ++gregory_faces;
+        EXPECT_EQ(p["nonfinite_samples"], 0) << entry.path();
+        EXPECT_LT(p["max_boundary_deviation"].get<double>(), 1e-11) << entry.path();
+      }
+    }
+  }
+  EXPECT_GT(gregory_faces, 22);  // at least the two Gregory scenes' faces
 }
 
 // 12 faces, 21 edges all shared (closed); 10 faces, 20 edges of which 15 shared (open).
