@@ -73,6 +73,11 @@ TEST(NetworkEditor, MovingAVertexChangesOnlyItsFacesAndEqualsAFullRebuild) {
       EXPECT_EQ(rev2[f] != rev[f], expected.count(f) == 1) << "vertex " << v << " face " << f;
     expect_equals_full_rebuild(ed);
   }
+  // The handles moved with their vertices, so every tangent plane survived: still G1.
+  std::vector<test::FaceSurface> faces;
+  for (int f = 0; f < ed.face_count(); ++f)
+    faces.push_back({&ed.evaluator(f).patch(), &ed.patch_side(f)});
+  EXPECT_LT(test::max_g1_angle_deg(ed.topology(), faces), 1e-6);
 }
 
 TEST(NetworkEditor, MovingAHandleChangesTheFacesAtItsVertexAndStaysG1InThePlane) {
