@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <nlohmann/json.hpp>
 
@@ -20,19 +21,27 @@ bool finite_sample(const SurfaceJet& j, const SurfaceGeometry& g) {
          std::isfinite(g.kmin) && std::isfinite(g.kmax);
 }
 
-// The curve side s of the surface must interpolate: the network edge (independent of the patch)
-// for faces, the patch's own boundary curve for explicit patches.
-BezierCurve side_curve(const Scene& scene, const SceneSurface& s, int face_side, int patch_side) {
-  if (s.face < 0) return s.evaluator->patch().boundary_curves().at(patch_side);
+// The curve side s of the surface must interpolate, as a function of the side parameter: the
+// network edge (independent of the patch) for faces, the patch's defining boundary curve for
+// explicit patches.
+std::function<Vec3(double)> side_curve(const Scene& scene, const SceneSurface& s, int face_side,
+                                       int patch_side) {
+  const Patch& patch = s.evaluator->patch();
+  if (s.face < 0)
+    return [&patch, patch_side](double t) { return patch.boundary_point(patch_side, t); };
   const Network& net = *scene.network;
   const auto& loop = net.faces[s.face].loop;
   const int n = static_cast<int>(loop.size());
   const int a = loop[face_side], b = loop[(face_side + 1) % n];
   for (std::size_t e = 0; e < net.edges.size(); ++e) {
-    if (net.edges[e].v[0] == a && net.edges[e].v[1] == b) return net.edge_curve(int(e));
-    if (net.edges[e].v[0] == b && net.edges[e].v[1] == a) return net.edge_curve(int(e)).reversed();
+    const bool forward = net.edges[e].v[0] == a && net.edges[e].v[1] == b;
+    if (forward || (net.edges[e].v[0] == b && net.edges[e].v[1] == a)) {
+      BezierCurve c = forward ? net.edge_curve(int(e)) : net.edge_curve(int(e)).reversed();
+      return [c = std::move(c)](double t) { return c.point(t); };
+    }
   }
-  return s.evaluator->patch().boundary_curves().at(patch_side);  // unreachable after validation
+  // Unreachable after validate_network: every face side has its edge.
+  return [&patch, patch_side](double t) { return patch.boundary_point(patch_side, t); };
 }
 
 PatchReport analyze_surface(const Scene& scene, const SceneSurface& s) {
@@ -58,10 +67,10 @@ PatchReport analyze_surface(const Scene& scene, const SceneSurface& s) {
   const Tessellation& t = ev.tessellation();
   for (int fs = 0; fs < r.sides; ++fs) {
     const int ps = s.face < 0 ? fs : s.patch_side.at(fs);
-    const BezierCurve c = side_curve(scene, s, fs, ps);
+    const auto curve = side_curve(scene, s, fs, ps);
     const auto& idx = t.sides[ps];
     for (std::size_t k = 0; k < idx.size(); ++k) {
-      const double d = glm::length(ev.jets()[idx[k]].p - c.point(double(k) / t.density));
+      const double d = glm::length(ev.jets()[idx[k]].p - curve(double(k) / t.density));
       r.max_boundary_deviation = std::max(r.max_boundary_deviation, std::isfinite(d) ? d : inf);
     }
   }

@@ -31,7 +31,13 @@ bool follow(PatchEvaluator& ev, const Patch& target, SyncStats& stats) {
 SyncStats SceneEvaluation::sync(const Scene& scene) {
   SyncStats stats;
   const std::size_t faces = scene.network ? scene.network->faces.size() : 0;
-  if (faces + scene.patches.size() != surfaces_.surfaces.size()) {
+  std::vector<std::vector<std::shared_ptr<Patch>>> pieces;
+  std::size_t surface_count = faces;
+  for (const ScenePatch& sp : scene.patches) {
+    pieces.push_back(surface_pieces_of(*sp.patch));
+    surface_count += pieces.back().size();
+  }
+  if (surface_count != surfaces_.surfaces.size()) {
     // Surfaces were added or removed: start again (rare, not on the drag path).
     SceneSurfaces fresh = evaluate_scene(scene, density_, scheme_, cache_, source_);
     surfaces_ = std::move(fresh);
@@ -50,10 +56,11 @@ SyncStats SceneEvaluation::sync(const Scene& scene) {
         if (surfaces_.surfaces[s].face == fp.face)
           targets.emplace_back(int(s), std::move(fp.patch));
   }
-  std::size_t explicit_index = 0;
-  for (std::size_t s = 0; s < surfaces_.surfaces.size(); ++s)
-    if (surfaces_.surfaces[s].face < 0)
-      targets.emplace_back(int(s), scene.patches.at(explicit_index++).patch);
+  std::vector<std::size_t> next_piece(scene.patches.size(), 0);
+  for (std::size_t s = 0; s < surfaces_.surfaces.size(); ++s) {
+    const int p = surfaces_.surfaces[s].patch;
+    if (p >= 0) targets.emplace_back(int(s), pieces.at(p).at(next_piece[p]++));
+  }
   for (auto& [s, patch] : targets) {
     SceneSurface& surface = surfaces_.surfaces[s];
     const uint64_t before = surface.evaluator->revision();

@@ -38,15 +38,25 @@ SceneSurfaces evaluate_scene(const Scene& scene, int density, std::optional<Face
   }
   for (std::size_t i = 0; i < scene.patches.size(); ++i) {
     const ScenePatch& sp = scene.patches[i];
-    SceneSurface s;
-    s.name = sp.name.empty() ? "patch" + std::to_string(i) : sp.name;
-    // Evaluators move control points, so each gets its own copy of the scene's patch.
-    std::shared_ptr<Patch> patch = sp.patch->clone();
-    auto tess = cache.get(patch->domain(), density);
-    s.evaluator = std::make_unique<PatchEvaluator>(std::move(patch), std::move(tess));
-    out.surfaces.push_back(std::move(s));
+    const std::string name = sp.name.empty() ? "patch" + std::to_string(i) : sp.name;
+    const auto pieces = surface_pieces_of(*sp.patch);
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+      SceneSurface s;
+      s.name = pieces.size() == 1 ? name : name + "." + std::to_string(k);
+      s.patch = static_cast<int>(i);
+      auto tess = cache.get(pieces[k]->domain(), density);
+      s.evaluator = std::make_unique<PatchEvaluator>(pieces[k], std::move(tess));
+      out.surfaces.push_back(std::move(s));
+    }
   }
   return out;
+}
+
+std::vector<std::shared_ptr<Patch>> surface_pieces_of(const Patch& patch) {
+  auto pieces = patch.surface_pieces();
+  // Evaluators move control points, so each gets its own copy of the scene's patch.
+  if (pieces.empty()) pieces.push_back(patch.clone());
+  return pieces;
 }
 
 }  // namespace pl

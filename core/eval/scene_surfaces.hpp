@@ -33,6 +33,9 @@ struct SceneSurfaces {
   std::vector<ProjectedVertex> projected_vertices;
 };
 
+// The surfaces a scene patch is drawn as: its surface_pieces(), or the patch itself.
+std::vector<std::shared_ptr<Patch>> surface_pieces_of(const Patch& patch);
+
 // Throws DataError for data it cannot evaluate. density >= 1.
 SceneSurfaces evaluate_scene(const Scene& scene, int density, std::optional<FaceScheme> scheme,
                              TessellationCache& cache, const std::string& source);

@@ -20,6 +20,10 @@ SurfaceJet combine(std::span<const Vec3> points, std::span<const Jet> phi) {
   return s;
 }
 
+Vec3 Patch::boundary_point(int side, double t) const {
+  return boundary_curves().at(side).point(t);
+}
+
 SurfaceJet Patch::evaluate(Vec2 x) const {
   std::vector<Jet> phi(size());
   basis(x, phi);

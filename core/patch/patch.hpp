@@ -50,6 +50,18 @@ class Patch {
   // is curve parameter t). Used to measure boundary deviation independently of evaluate().
   virtual std::vector<BezierCurve> boundary_curves() const = 0;
 
+  // The point at side parameter t of the curve side `side` must interpolate. The default takes
+  // it from boundary_curves(); types whose sides are not one Bézier curve (multi-span B-spline
+  // or NURBS sides, composite patches) override it with their own defining curve, evaluated
+  // independently of evaluate().
+  virtual Vec3 boundary_point(int side, double t) const;
+
+  // A patch that is really several surfaces (a Catmull–Clark limit surface: one per base face)
+  // returns them here, each a Patch over its own domain with the same control points (in the
+  // same order); scene evaluation then tessellates every piece at the full density. Empty for
+  // ordinary patches.
+  virtual std::vector<std::shared_ptr<Patch>> surface_pieces() const { return {}; }
+
  protected:
   Patch() = default;
   explicit Patch(std::vector<Vec3> points) : points_(std::move(points)) {}
