@@ -10,4 +10,4 @@ cmake --build build --target patchlab
 if [ $# -gt 0 ]; then
   exec build/app/patchlab "$@"
 fi
-exec build/app/patchlab analyze assets/default.json
+exec build/app/patchlab
