@@ -28,8 +28,8 @@ struct DisplaySettings {
   double isophote_width_px = 1.6;
   Vec3 isophote_direction{0.3, -0.5, 0.81};  // model space; need not be unit
 
-  // Zebra: `count` dark stripes over the reflected half-sphere; width is the dark fraction.
-  int zebra_count = 14;
+  // Zebra: `count` dark stripes per half turn of the reflected ray; width is the dark fraction.
+  int zebra_count = 8;
   double zebra_width = 0.5;
 
   // Curvature: the range of the colour map (nullopt: automatic with percentile clipping) and

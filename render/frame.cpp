@@ -51,7 +51,8 @@ Image render_frame(const SceneRenderer& renderer, const FrameRequest& r) {
   const int tw = std::min(tile, r.width), th = std::min(tile, r.height);
   OffscreenTarget target(tw, th);
   Image image(r.width, r.height);
-  const double pixel_scale = std::max(0.5, r.height / kReferenceHeight);
+  // Below 0.75 dots and lines of small renders would be too thin to read.
+  const double pixel_scale = std::max(0.75, r.height / kReferenceHeight);
   const std::vector<Viewport> panels =
       panel_viewports(r.width, r.height, static_cast<int>(r.panels.size()), r.settings, r.range);
 

@@ -16,9 +16,9 @@ std::string format_tick(double value) {
 }
 
 int legend_scale(int width, int height) {
-  // One font pixel per 450 image pixels of the smaller dimension (a 4:3 frame's height).
+  // One font pixel per 400 image pixels of the smaller dimension (a 4:3 frame's height).
   const double side = std::min(width * 0.75, static_cast<double>(height));
-  return std::max(1, static_cast<int>(std::ceil(side / 450.0)));
+  return std::max(1, static_cast<int>(std::ceil(side / 400.0)));
 }
 
 namespace {

@@ -14,6 +14,8 @@ void main() {
   float a = 1.0 - smoothstep(r - 0.5, r + 0.5, d);
   if (a <= 0.0) discard;
   vec3 c = u_kind_colors[clamp(int(f_tag + 0.5), 0, 3)];
-  c = mix(c, vec3(0.08), smoothstep(r - 2.0, r - 1.0, d));  // rim
+  // A dark rim a quarter of the radius wide (at most 1.5 px) keeps small dots coloured.
+  float rim = min(0.25 * r, 1.5);
+  c = mix(c, vec3(0.08), smoothstep(r - rim - 0.5, r - rim + 0.5, d));
   frag_color = vec4(c, a * u_alpha);
 }
