@@ -17,6 +17,8 @@ namespace pl {
 struct SceneSurface {
   std::string name;             // the face's or patch's name, or face<i> / patch<i>
   int face = -1;                // network face index, or -1 for an explicit patch
+  int patch = -1;               // index into Scene::patches for explicit patches (several
+                                // surfaces share one when it has surface_pieces()), else -1
   std::vector<int> patch_side;  // for faces: face side -> patch domain side
   std::unique_ptr<PatchEvaluator> evaluator;
 };
