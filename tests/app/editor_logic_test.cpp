@@ -1,0 +1,174 @@
+// The editor's GUI-free logic: XDG paths, default scene, file listing, preferences, point names,
+// invocation, the probe and the comparison's distance field.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "app/editor/logic/editor_invocation.hpp"
+#include "app/editor/logic/editor_paths.hpp"
+#include "app/editor/logic/file_listing.hpp"
+#include "app/editor/logic/grid_scene.hpp"
+#include "app/editor/logic/live_surfaces.hpp"
+#include "app/editor/logic/point_names.hpp"
+#include "app/editor/logic/preferences.hpp"
+#include "app/editor/logic/surface_difference.hpp"
+#include "app/editor/logic/surface_probe.hpp"
+#include "cli_test_util.hpp"
+
+namespace pl {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(EditorPaths, XdgRules) {
+  EXPECT_EQ(*xdg_dir("/x/cfg", "/home/u", ".config"), fs::path("/x/cfg/patchlab"));
+  EXPECT_EQ(*xdg_dir(nullptr, "/home/u", ".config"), fs::path("/home/u/.config/patchlab"));
+  EXPECT_EQ(*xdg_dir("", "/home/u", ".local/state"), fs::path("/home/u/.local/state/patchlab"));
+  // Relative values are invalid by the XDG spec: never the working directory.
+  EXPECT_EQ(*xdg_dir("rel", "/home/u", ".config"), fs::path("/home/u/.config/patchlab"));
+  EXPECT_FALSE(xdg_dir("rel", "also-rel", ".config"));
+  EXPECT_FALSE(xdg_dir(nullptr, nullptr, ".config"));
+}
+
+TEST(EditorPaths, DefaultSceneIsFoundFromAnywhere) {
+  const auto p = default_scene_path(fs::path("/nonexistent/bin/patchlab"));
+  ASSERT_TRUE(p);
+  EXPECT_TRUE(p->is_absolute());
+  EXPECT_TRUE(fs::is_regular_file(*p));
+  EXPECT_EQ(p->filename(), "default.json");
+}
+
+TEST(EditorFileListing, DirectoriesFirstFilteredSorted) {
+  test::TempDir dir;
+  const fs::path root = dir.file("b.json", "{}").parent_path();
+  dir.file("A.GBP", "");
+  dir.file("c.txt", "");
+  dir.file(".hidden.json", "{}");
+  fs::create_directories(root / "sub");
+  const DirListing l = list_directory(root, {".json", ".gbp"});
+  ASSERT_TRUE(l.error.empty());
+  ASSERT_EQ(l.entries.size(), 3u);
+  EXPECT_EQ(l.entries[0].name, "sub");
+  EXPECT_TRUE(l.entries[0].directory);
+  EXPECT_EQ(l.entries[1].name, "A.GBP");
+  EXPECT_EQ(l.entries[2].name, "b.json");
+  EXPECT_FALSE(list_directory(root / "missing", {}).error.empty());
+  EXPECT_EQ(resolve_typed_name("/d", "part", ".json"), fs::path("/d/part.json"));
+  EXPECT_EQ(resolve_typed_name("/d", "/e/x.gbp", ".json"), fs::path("/e/x.gbp"));
+}
+
+TEST(EditorPreferences, RoundTripAndBadValuesIgnored) {
+  Preferences p = default_preferences();
+  p.display.base = BaseMode::Zebra;
+  p.display.curvature = CurvatureKind::Kmax;
+  p.display.zebra_count = 21;
+  p.fine_density = 40;
+  p.last_directory = "/some/where";
+  const Preferences q = preferences_from_text(preferences_to_text(p));
+  EXPECT_EQ(q.display.base, BaseMode::Zebra);
+  EXPECT_EQ(q.display.curvature, CurvatureKind::Kmax);
+  EXPECT_EQ(q.display.zebra_count, 21);
+  EXPECT_EQ(q.fine_density, 40);
+  EXPECT_EQ(q.last_directory, "/some/where");
+  const Preferences bad = preferences_from_text("fine_density = -3\nbase = nonsense\nzzz\n");
+  EXPECT_EQ(bad.fine_density, default_preferences().fine_density);
+  EXPECT_EQ(bad.display.base, BaseMode::Isophotes);  // the editor starts with isophotes
+}
+
+TEST(EditorPointNames, ParseWhatDescribePrints) {
+  for (const PointRef& r :
+       {PointRef::vertex(3), PointRef::handle(5, 1), PointRef::patch_point(0, 7)})
+    EXPECT_EQ(parse_point_name(describe(r)), r);
+  EXPECT_FALSE(parse_point_name("vertex"));
+  EXPECT_FALSE(parse_point_name("edge 2 handle 2"));
+  EXPECT_FALSE(parse_point_name("vertex 1 extra"));
+}
+
+TEST(EditorInvocation, EditorOrCli) {
+  using V = std::vector<std::string>;
+  EXPECT_TRUE(is_editor_invocation(V{}));
+  EXPECT_TRUE(is_editor_invocation(V{"scene.json"}));
+  EXPECT_TRUE(is_editor_invocation(V{"--bench-drag"}));
+  EXPECT_FALSE(is_editor_invocation(V{"analyze", "x.json"}));
+  EXPECT_FALSE(is_editor_invocation(V{"--help"}));
+  EXPECT_FALSE(is_editor_invocation(V{"frobnicate"}));
+}
+
+TEST(EditorProbe, HitsTheNearestTriangleAndInterpolates) {
+  SurfaceMesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 2}, {1, 0, 2}, {0, 1, 2}};
+  m.normals.assign(6, Vec3(0, 0, 1));
+  m.mean = {0, 1, 2, 10, 10, 10};
+  m.gaussian = m.kmin = m.kmax = m.mean;
+  m.triangles = {{0, 1, 2}, {3, 4, 5}};
+  const Ray down{Vec3(0.25, 0.5, 5), Vec3(0, 0, -1)};
+  const std::vector<SurfaceMesh> meshes{m};
+  const auto hit = probe_surfaces(meshes, down);
+  ASSERT_TRUE(hit);
+  EXPECT_NEAR(hit->position.z, 2, 1e-12);  // the upper triangle is hit first
+  EXPECT_NEAR(hit->mean, 10, 1e-12);
+  const Ray up{Vec3(0.25, 0.5, 1), Vec3(0, 0, -1)};
+  const auto low = probe_surfaces(meshes, up);
+  ASSERT_TRUE(low);
+  EXPECT_NEAR(low->mean, 0.25 * 1 + 0.5 * 2, 1e-12);  // barycentric in (x, y)
+  EXPECT_FALSE(probe_surfaces(meshes, Ray{Vec3(3, 3, 5), Vec3(0, 0, -1)}));
+}
+
+TEST(EditorDifference, SignedDistanceBetweenParallelPlanes) {
+  // A fine grid at z = 0 and a coarser, shifted grid at z = 0.1: every distance is 0.1 and
+  // positive on the side the normals point to.
+  auto grid = [](int n, double z, double shift) {
+    SurfaceMesh m;
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= n; ++j)
+        m.positions.push_back(Vec3(shift + double(j) / n, double(i) / n, z));
+    m.normals.assign(m.positions.size(), Vec3(0, 0, 1));
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        const uint32_t a = i * (n + 1) + j, b = a + 1, c = a + n + 1, d = c + 1;
+        m.triangles.push_back({a, b, d});
+        m.triangles.push_back({a, d, c});
+      }
+    return m;
+  };
+  const SurfaceMesh lower = grid(20, 0, 0), upper = grid(7, 0.1, 0.01);
+  const std::vector<double> d = signed_distance_to(upper, lower);
+  for (std::size_t i = 0; i < d.size(); ++i)
+    if (upper.positions[i].x <= 1) {
+      EXPECT_NEAR(d[i], 0.1, 1e-12) << i;
+    }
+  const std::vector<double> back = signed_distance_to(lower, upper);
+  for (std::size_t i = 0; i < back.size(); ++i)
+    if (lower.positions[i].x >= 0.01) {
+      EXPECT_NEAR(back[i], -0.1, 1e-12) << i;
+    }
+}
+
+TEST(EditorLiveSurfaces, IncrementalSyncMatchesAFreshEvaluation) {
+  Scene s = make_grid_network_scene(2, 2);
+  LiveSurfaces live(s, 8, std::nullopt, "grid");
+  const std::vector<uint64_t> before = [&] {
+    std::vector<uint64_t> r;
+    for (const SurfaceMesh& m : live.draw().surfaces) r.push_back(m.revision);
+    return r;
+  }();
+  set_point_position(s, PointRef::vertex(0), Vec3(-0.1, -0.05, 0.2));  // a corner: one face
+  const std::vector<int> changed = live.sync(s, 1);
+  EXPECT_FALSE(changed.empty());
+  EXPECT_LT(changed.size(), 4u);  // the far faces are untouched and not re-uploaded
+  LiveSurfaces fresh(s, 8, std::nullopt, "grid");
+  ASSERT_EQ(fresh.draw().surfaces.size(), live.draw().surfaces.size());
+  for (std::size_t k = 0; k < fresh.draw().surfaces.size(); ++k) {
+    const SurfaceMesh &a = live.draw().surfaces[k], &b = fresh.draw().surfaces[k];
+    const bool was_changed = std::find(changed.begin(), changed.end(), int(k)) != changed.end();
+    EXPECT_EQ(a.revision != before[k], was_changed);
+    for (std::size_t i = 0; i < a.positions.size(); ++i)
+      EXPECT_LT(glm::length(a.positions[i] - b.positions[i]), 1e-12);
+  }
+  EXPECT_EQ(live.points().find(PointRef::vertex(0)), 0);
+  EXPECT_EQ(live.points().positions[0], Vec3(-0.1, -0.05, 0.2));
+}
+
+}  // namespace
+}  // namespace pl
