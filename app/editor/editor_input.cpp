@@ -96,7 +96,7 @@ void Editor::handle_shortcuts() {
       handle_ctrl_key(key, shift);
       continue;
     }
-    if (io.WantCaptureKeyboard) continue;
+    if (ImGui::IsAnyItemActive()) continue;  // a slider or field being edited has the keys
     // Arrow keys nudge the selection in the view plane; Page Up/Down along the view direction.
     // Steps are 1% of the scene size (Shift: 10x, Alt: 0.1x).
     const double step =
@@ -112,6 +112,7 @@ void Editor::handle_shortcuts() {
         if (doc_.scene().network) {
           compare_ = !compare_;
           rebuild_views();
+          frame_all();  // the panels' aspect changed
         }
         break;
       case GLFW_KEY_D:

@@ -73,6 +73,7 @@ void Editor::draw_menu_bar() {
     if (ImGui::MenuItem("Compare Gregory | GB", "C", &compare, doc_.scene().network.has_value())) {
       compare_ = compare;
       rebuild_views();
+      frame_all();  // the panels' aspect changed
     }
     ImGui::MenuItem("Difference Colouring", "D", &difference_, compare_);
     ImGui::MenuItem("Probe Under Cursor", nullptr, &prefs_.show_probe);
@@ -207,6 +208,7 @@ void Editor::draw_comparison_section() {
   if (ImGui::Checkbox("Gregory | GB side by side  (C)", &compare)) {
     compare_ = compare;
     rebuild_views();
+    frame_all();  // the panels' aspect changed
   }
   if (!compare_) return;
   ImGui::Checkbox("Colour GB by distance  (D)", &difference_);

@@ -45,7 +45,7 @@ GlWindow::GlWindow(int width, int height, const std::string& title,
   ImGuiIO& io = ImGui::GetIO();
   // Never the working directory: the layout lives under $XDG_STATE_HOME/patchlab, or nowhere.
   io.IniFilename = ini_file_.empty() ? nullptr : ini_file_.c_str();
-  io.ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard;
+  // No keyboard navigation of the panels: single keys belong to the 3D view (F, C, 1, arrows).
   apply_theme();
   ImGui_ImplGlfw_InitForOpenGL(window_, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");
