@@ -63,6 +63,10 @@ void Editor::set_document(Document doc) {
 }
 
 void Editor::rebuild_views() {
+  if (options_.compare) {
+    compare_ = true;
+    options_.compare = false;
+  }
   main_view_.reset();
   compare_views_[0].reset();
   compare_views_[1].reset();
@@ -208,6 +212,10 @@ void Editor::frame() {
   ++frames_;
   // Report only once the layout is final (ImGui hides new windows on their first frame).
   if (frames_ >= 3) report_debug_point();
+  if (frames_ == 3 && options_.screenshot) {
+    take_screenshot(*options_.screenshot);
+    quit_ = true;
+  }
 }
 
 }  // namespace pl

@@ -32,6 +32,8 @@ struct EditorOptions {
   bool bench_drag = false;
   std::optional<PointRef> debug_point;  // print its window position once the view is shown
   int width = 1440, height = 900;
+  bool compare = false;                             // start split: Gregory | GB
+  std::optional<std::filesystem::path> screenshot;  // write one, then quit (scripts, docs)
 };
 
 class Editor {

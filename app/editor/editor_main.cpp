@@ -67,6 +67,15 @@ int run_editor(std::span<const std::string> args, std::ostream& out, std::ostrea
         err << "patchlab: --debug-point takes a point name such as \"vertex 2\"\n";
         return 2;
       }
+    } else if (a == "--compare") {
+      o.compare = true;
+    } else if (a == "--screenshot") {
+      const std::string* v = value();
+      if (!v) {
+        err << "patchlab: --screenshot takes OUT.png\n";
+        return 2;
+      }
+      o.screenshot = *v;
     } else if (a == "--size") {
       const std::string* v = value();
       if (!v || !parse_size(*v, o.width, o.height)) {
@@ -75,7 +84,9 @@ int run_editor(std::span<const std::string> args, std::ostream& out, std::ostrea
       }
     } else if (a.rfind("--", 0) == 0) {
       err << "patchlab: unknown editor option " << a << "\n"
-          << "usage: patchlab [FILE] [--size WxH] [--bench-drag] [--debug-point NAME]\n";
+          << "usage: patchlab [FILE] [--size WxH] [--compare] [--screenshot OUT.png] "
+             "[--bench-drag] "
+             "[--debug-point NAME]\n";
       return 2;
     } else if (!o.file) {
       o.file = a;
