@@ -309,7 +309,7 @@ void Editor::draw_probe_window() {
 }
 
 void Editor::draw_help_window() {
-  ImGui::SetNextWindowSize(ImVec2(430 * ui_scale_, 0), ImGuiCond_Appearing);
+  ImGui::SetNextWindowSize(ImVec2(600 * ui_scale_, 0), ImGuiCond_Appearing);
   ImGui::SetNextWindowPos(ImVec2(60 * ui_scale_, 80 * ui_scale_), ImGuiCond_Appearing);
   if (!ImGui::Begin("Mouse and keys", &show_help_, ImGuiWindowFlags_NoSavedSettings)) {
     ImGui::End();
