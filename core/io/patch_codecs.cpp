@@ -7,6 +7,7 @@
 #include "core/io/gap_fill_codec.hpp"
 #include "core/io/gb_patch_codec.hpp"
 #include "core/io/gb_ribbon_patch_codec.hpp"
+#include "core/io/gregory_patch_codecs.hpp"
 #include "core/io/hermite_patch_codec.hpp"
 #include "core/io/interpolating_patch_codec.hpp"
 #include "core/io/nurbs_patch_codec.hpp"
@@ -20,6 +21,8 @@ std::span<const PatchCodec> patch_codecs() {
       PatchCodec{"bezier", read_bezier_patch, write_bezier_patch},
       PatchCodec{"gb", read_gb_patch, write_gb_patch},
       PatchCodec{"gb-ribbons", read_gb_ribbon_patch, write_gb_ribbon_patch},
+      PatchCodec{"gregory-quad", read_gregory_quad_patch, write_gregory_quad_patch},
+      PatchCodec{"gregory-tri", read_gregory_tri_patch, write_gregory_tri_patch},
       PatchCodec{"interpolating", read_interpolating_patch, write_interpolating_patch},
       PatchCodec{"hermite", read_hermite_patch, write_hermite_patch},
       PatchCodec{"bspline", read_bspline_patch, write_bspline_patch},

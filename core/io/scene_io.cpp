@@ -1,5 +1,7 @@
 #include "core/io/scene_io.hpp"
 
+#include <stdexcept>
+
 #include "core/io/atomic_file.hpp"
 #include "core/io/json_node.hpp"
 #include "core/io/patch_codec.hpp"
@@ -153,7 +155,11 @@ std::string scene_to_json(const Scene& scene) {
       nlohmann::json jp;
       jp["type"] = sp.patch->type();
       if (!sp.name.empty()) jp["name"] = sp.name;
-      find_patch_codec(sp.patch->type())->write(*sp.patch, jp);
+      const PatchCodec* codec = find_patch_codec(sp.patch->type());
+      // Every patch type registers a codec (core/io/patch_codecs.cpp); a missing one is a
+      // programming error, reported rather than dereferenced.
+      if (!codec) throw std::logic_error("no scene codec for patch type " + sp.patch->type());
+      codec->write(*sp.patch, jp);
       doc["patches"].push_back(jp);
     }
   }
