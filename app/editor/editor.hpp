@@ -159,7 +159,6 @@ class Editor {
   bool quit_ = false;
   bool show_help_ = false;
   bool show_screenshot_ = false;
-  bool show_demo_probe_ = true;
   std::string status_message_;
   Clock::time_point status_time_;
   std::vector<std::string> dropped_;

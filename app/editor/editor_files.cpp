@@ -185,8 +185,11 @@ void Editor::draw_modals() {
     ImGui::TextUnformatted(error_message_.c_str());
     ImGui::PopTextWrapPos();
     ImGui::TextDisabled("Nothing was changed.");
-    if (ImGui::Button("OK", ImVec2(120 * ui_scale_, 0)) || ImGui::IsKeyPressed(GLFW_KEY_ENTER) ||
-        ImGui::IsKeyPressed(GLFW_KEY_ESCAPE))
+    // Keys count only after the first frame: the Enter that confirmed a file dialog is still
+    // "pressed" in the frame this modal opens.
+    const bool keys = !ImGui::IsWindowAppearing();
+    if (ImGui::Button("OK", ImVec2(120 * ui_scale_, 0)) ||
+        (keys && (ImGui::IsKeyPressed(GLFW_KEY_ENTER) || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE))))
       ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
   }
@@ -214,7 +217,8 @@ void Editor::draw_modals() {
       if (confirm_action_) confirm_action_();
     }
     ImGui::SameLine();
-    if (ImGui::Button("Cancel", b) || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE))
+    if (ImGui::Button("Cancel", b) ||
+        (!ImGui::IsWindowAppearing() && ImGui::IsKeyPressed(GLFW_KEY_ESCAPE)))
       ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
   }

@@ -82,6 +82,7 @@ std::optional<fs::path> FileBrowser::draw() {
     refresh();
   }
   ImGui::SetNextItemWidth(-ImGui::CalcTextSize(action_.c_str()).x * 2 - 120);
+  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();  // type a name straight away
   const bool typed_enter = ImGui::InputTextWithHint("##name", "file name", name_, sizeof name_,
                                                     ImGuiInputTextFlags_EnterReturnsTrue);
   ImGui::SameLine();
