@@ -10,6 +10,10 @@ namespace {
 // domain's interior point: the limit from inside, to the precision a display needs.
 constexpr double kSingularNudge = 1e-6;
 
+// Below this many samples a loop runs on one thread: waking the OpenMP team costs more than it
+// saves (and spinning idle threads steal the core from the renderer and other processes).
+constexpr std::ptrdiff_t kParallelMin = 8192;
+
 inline void axpy(SurfaceJet& s, const Vec3& d, const Jet& w) {
   s.p += w.f * d;
   s.su += w.fu * d;
@@ -43,7 +47,7 @@ void PatchEvaluator::update_geometry(std::size_t i) {
 void PatchEvaluator::evaluate_all() {
   const auto& xs = tessellation_->points;
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(xs.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     jets_[i] = patch_->evaluate(xs[i]);
     update_geometry(i);
@@ -67,7 +71,7 @@ const PatchEvaluator::Column& PatchEvaluator::column(std::size_t k) {
   // Evaluate in parallel chunks: influence() is const and thread-safe.
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(xs.size());
   constexpr std::ptrdiff_t chunk = 4096;
-#pragma omp parallel for schedule(dynamic)
+#pragma omp parallel for schedule(dynamic) if (n >= kParallelMin)
   for (std::ptrdiff_t b = 0; b < n; b += chunk) {
     const std::ptrdiff_t e = std::min(n, b + chunk);
     patch_->influence(k, std::span(xs).subspan(b, e - b), std::span(c.phi).subspan(b, e - b));
@@ -108,14 +112,14 @@ std::size_t PatchEvaluator::move_control_point(std::size_t k, const Vec3& p) {
   const Column& c = column(k);
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(c.phi.size());
   if (c.dense) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
     for (std::ptrdiff_t i = 0; i < n; ++i) {
       if (c.phi[i].is_zero()) continue;
       axpy(jets_[i], d, c.phi[i]);
       update_geometry(i);
     }
   } else {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
     for (std::ptrdiff_t i = 0; i < n; ++i) {
       const uint32_t s = c.index[i];
       axpy(jets_[s], d, c.phi[i]);
