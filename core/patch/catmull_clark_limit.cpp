@@ -118,4 +118,28 @@ std::vector<std::pair<int, Jet>> CatmullClarkLimit::basis(int face, Vec2 uv) con
   return {acc.begin(), acc.end()};
 }
 
+Vec3 CatmullClarkLimit::limit_point(int face, Vec2 uv, const std::vector<Vec3>& points) const {
+  using Factory = Far::LimitStencilTableFactoryReal<double>;
+  const double s = std::clamp(uv.x, 0.0, 1.0), t = std::clamp(uv.y, 0.0, 1.0);
+  Factory::LocationArray loc;
+  loc.ptexIdx = face;
+  loc.numLocations = 1;
+  loc.s = &s;
+  loc.t = &t;
+  Factory::Options lo;
+  lo.generate1stDerivatives = false;
+  lo.generate2ndDerivatives = false;
+  // The refined-vertex stencils and patch table are shared (they define the surface); the rest
+  // of the evaluation is OpenSubdiv's.
+  std::unique_ptr<const Far::LimitStencilTableReal<double>> table(
+      Factory::Create(*osd_->refiner, {loc}, osd_->stencils.get(), osd_->patches.get(), lo));
+  if (!table || table->GetNumStencils() != 1)
+    throw std::logic_error("OpenSubdiv made no limit stencil for a face parameter");
+  const auto st = table->GetLimitStencil(0);
+  Vec3 p(0);
+  for (int k = 0; k < st.GetSize(); ++k)
+    p += st.GetWeights()[k] * points.at(st.GetVertexIndices()[k]);
+  return p;
+}
+
 }  // namespace pl

@@ -34,6 +34,12 @@ class CatmullClarkLimit {
   // The non-zero limit basis functions of face f at (u, v) in [0,1]^2: (base vertex, jet).
   std::vector<std::pair<int, Jet>> basis(int face, Vec2 uv) const;
 
+  // The limit point of face f at (u, v) for these vertex positions through OpenSubdiv's limit
+  // stencils (Far::LimitStencilTableFactory: its own patch lookup, basis evaluation and stencil
+  // accumulation), a path independent of basis(): used for boundary deviation. Slower than
+  // basis() (a stencil table per call).
+  Vec3 limit_point(int face, Vec2 uv, const std::vector<Vec3>& points) const;
+
  private:
   struct Osd;
   std::size_t vertex_count_;

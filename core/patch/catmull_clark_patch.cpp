@@ -79,6 +79,10 @@ std::vector<BezierCurve> CatmullClarkFacePatch::boundary_curves() const {
   return sides;
 }
 
+Vec3 CatmullClarkFacePatch::boundary_point(int side, double t) const {
+  return limit_->limit_point(face_, domain_.side_point(side, t), points_);
+}
+
 CatmullClarkPatch::CatmullClarkPatch(std::vector<Vec3> vertices,
                                      std::vector<std::vector<int>> faces)
     : Patch(std::move(vertices)),
@@ -131,6 +135,20 @@ std::vector<BezierCurve> CatmullClarkPatch::boundary_curves() const {
     sides.emplace_back(std::move(p));
   }
   return sides;
+}
+
+Vec3 CatmullClarkPatch::boundary_point(int side, double t) const {
+  const Strip s = strip_of(domain_.side_point(side, t), limit_->face_count());
+  return limit_->limit_point(s.face, s.uv, points_);
+}
+
+std::vector<std::shared_ptr<Patch>> CatmullClarkPatch::surface_pieces() const {
+  // The pieces share the limit (topology, patch table, stencils); each holds its own copy of
+  // the points, as every Patch does, so a drag moves index k in each of them.
+  std::vector<std::shared_ptr<Patch>> r;
+  for (std::size_t f = 0; f < limit_->face_count(); ++f)
+    r.push_back(std::make_shared<CatmullClarkFacePatch>(limit_, static_cast<int>(f), points_));
+  return r;
 }
 
 std::vector<std::unique_ptr<CatmullClarkFacePatch>> CatmullClarkPatch::face_patches() const {

@@ -4,12 +4,10 @@
 // (u, v). Its control points are all base vertices; only the face's neighbourhood has non-zero
 // weights, so drags are sparse.
 //
-// CatmullClarkPatch: the whole surface as one scene entry ("catmull-clark"). As a Patch it is an
-// atlas: face f covers the strip u in [f/F, (f+1)/F] of [0,1]^2, so every generic tool (export,
-// analyze, the evaluator) works on it unchanged. A strip gets density/F samples across; showing
-// each face with its own full tessellation needs evaluate_scene to make one surface per
-// face_patches() entry, and SceneEvaluation / scene_points to map surfaces to scene patches by a
-// stored index instead of by position (see the issue #7 report).
+// CatmullClarkPatch: the whole surface as one scene entry ("catmull-clark"). Scene evaluation
+// draws it as its surface_pieces(): one CatmullClarkFacePatch per base face, each at the full
+// density. As a Patch by itself it is an atlas (face f covers the strip u in [f/F, (f+1)/F] of
+// [0,1]^2) so that tools taking one Patch still work on it.
 #pragma once
 
 #include <memory>
@@ -38,6 +36,9 @@ class CatmullClarkFacePatch final : public Patch {
   // otherwise the Bézier curve on the side's limit points at t = 0, 1/3, 2/3, 1 interpolated
   // (the limit side of an irregular face is not one polynomial).
   std::vector<BezierCurve> boundary_curves() const override;
+  // The limit surface on the side through OpenSubdiv's limit stencils (independent of
+  // evaluate()), exact for every face.
+  Vec3 boundary_point(int side, double t) const override;
 
   int face() const { return face_; }
 
@@ -64,6 +65,11 @@ class CatmullClarkPatch final : public Patch {
   // The atlas's sides cross many faces: the Bézier curve on the limit points at the face
   // breaks (not exact; the interface has no piecewise curve).
   std::vector<BezierCurve> boundary_curves() const override;
+  // The limit side through OpenSubdiv's limit stencils on the face the side parameter falls in.
+  Vec3 boundary_point(int side, double t) const override;
+  // One CatmullClarkFacePatch per base face (face order), each over its own unit square with
+  // all control vertices: scenes tessellate every face at the full density.
+  std::vector<std::shared_ptr<Patch>> surface_pieces() const override;
 
   const CatmullClarkLimit& limit() const { return *limit_; }
   std::vector<std::unique_ptr<CatmullClarkFacePatch>> face_patches() const;

@@ -14,6 +14,8 @@
 #include "core/curve/bspline_curve.hpp"
 #include "core/domain/tessellation_cache.hpp"
 #include "core/eval/patch_evaluator.hpp"
+#include "core/eval/scene_evaluation.hpp"
+#include "core/eval/scene_surfaces.hpp"
 #include "core/patch/bspline_patch.hpp"
 #include "core/patch/catmull_clark_patch.hpp"
 
@@ -224,6 +226,154 @@ TEST(ClassicCatmullClark, FiniteEverywhereAndDerivativesMatchFiniteDifferences) 
   const auto faces = cc.face_patches();
   EXPECT_LT(test::interface_mismatch(*faces[0], test::random_domain_points(5, 72)), 1e-12);
   EXPECT_LT(test::interface_mismatch(cc, test::random_domain_points(5, 73)), 1e-11);
+}
+
+double mesh_size(const Mesh& m) {
+  Vec3 lo = m.v[0], hi = m.v[0];
+  for (const Vec3& p : m.v) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  return glm::length(hi - lo);
+}
+
+double angle_between_deg(const Vec3& a, const Vec3& b) {
+  return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)) * 180.0 / M_PI;
+}
+
+TEST(ClassicCatmullClark, SurfacePiecesAreTheFacesOfTheAtlasAndOfOpenSubdiv) {
+  double vs_osd = 0, vs_atlas = 0, side_vs_eval = 0;
+  for (const Mesh& m : {cube(), grid(5), twisted_grid()}) {
+    const CatmullClarkPatch cc(m.v, m.f);
+    const auto pieces = cc.surface_pieces();
+    ASSERT_EQ(pieces.size(), m.f.size());
+    const double F = double(m.f.size()), size = mesh_size(m);
+    for (std::size_t f = 0; f < pieces.size(); ++f) {
+      const Patch& piece = *pieces[f];
+      ASSERT_EQ(piece.control_points(), cc.control_points());  // same vertices, same order
+      ASSERT_EQ(piece.domain().side_count(), 4);
+      const auto uv = test::random_domain_points(12, 80 + unsigned(f));
+      const auto ref = osd_limit(m, int(f), uv);
+      for (std::size_t i = 0; i < uv.size(); ++i) {
+        const SurfaceJet a = piece.evaluate(uv[i]);
+        vs_osd = std::max(vs_osd, jet_diff(a, ref[i]) / size);
+        // The atlas strip of face f, its u derivatives rescaled to the face's own u.
+        SurfaceJet b = cc.evaluate({(double(f) + uv[i].x) / F, uv[i].y});
+        b.su /= F, b.suu /= F * F, b.suv /= F;
+        vs_atlas = std::max(vs_atlas, jet_diff(a, b) / size);
+      }
+      // boundary_point (OpenSubdiv limit stencils) against the piece's own evaluation.
+      for (int side = 0; side < 4; ++side)
+        for (double t : {0.0, 0.3, 0.5, 0.91, 1.0})
+          side_vs_eval =
+              std::max(side_vs_eval, max_abs(piece.boundary_point(side, t) -
+                                             piece.evaluate(piece.domain().side_point(side, t)).p) /
+                                         size);
+    }
+  }
+  std::printf(
+      "figure catmull_clark_pieces_vs_osd_limit_stencils_relative %.3e\n"
+      "figure catmull_clark_pieces_vs_atlas_relative %.3e\n"
+      "figure catmull_clark_boundary_point_vs_evaluate_relative %.3e\n",
+      vs_osd, vs_atlas, side_vs_eval);
+  EXPECT_LT(vs_osd, 1e-12);
+  EXPECT_LT(vs_atlas, 1e-12);
+  EXPECT_LT(side_vs_eval, 1e-12);
+}
+
+TEST(ClassicCatmullClark, AdjacentPiecesShareTheirEdgesWithOneNormal) {
+  // Face side i runs loop[i] -> loop[i+1] (u along v0 -> v1, v along v0 -> v3); the neighbour's
+  // side over the same edge runs the other way, so side parameter t meets 1 - t.
+  double gap = 0, angle = 0, angle_at_ev = 0;
+  int edges = 0;
+  for (const Mesh& m : {cube(), grid(5), twisted_grid()}) {
+    const CatmullClarkPatch cc(m.v, m.f);
+    const auto pieces = cc.surface_pieces();
+    const double size = mesh_size(m);
+    std::vector<int> valence(m.v.size(), 0);
+    for (const auto& f : m.f)
+      for (int v : f) ++valence[v];
+    for (std::size_t f = 0; f < m.f.size(); ++f)
+      for (std::size_t g = f + 1; g < m.f.size(); ++g)
+        for (int i = 0; i < 4; ++i)
+          for (int j = 0; j < 4; ++j) {
+            const int a = m.f[f][i], b = m.f[f][(i + 1) % 4];
+            if (m.f[g][j] != b || m.f[g][(j + 1) % 4] != a) continue;
+            ++edges;
+            for (int k = 0; k <= 32; ++k) {
+              const double t = k / 32.0;
+              const SurfaceJet p = pieces[f]->evaluate(pieces[f]->domain().side_point(i, t));
+              const SurfaceJet q = pieces[g]->evaluate(pieces[g]->domain().side_point(j, 1 - t));
+              gap = std::max(gap, glm::length(p.p - q.p) / size);
+              const double ang = angle_between_deg(glm::cross(p.su, p.sv), glm::cross(q.su, q.sv));
+              // End points on an interior extraordinary vertex: the Gregory end caps' limit
+              // normal, reported separately.
+              const int end = k == 0 ? a : k == 32 ? b : -1;
+              const bool ev = end >= 0 && valence[end] != 4 && valence[end] > 2;
+              (ev ? angle_at_ev : angle) = std::max(ev ? angle_at_ev : angle, ang);
+            }
+          }
+  }
+  std::printf(
+      "figure catmull_clark_shared_edges %d\n"
+      "figure catmull_clark_shared_edge_gap_relative %.3e\n"
+      "figure catmull_clark_shared_edge_normal_angle_deg %.3e\n"
+      "figure catmull_clark_shared_edge_normal_angle_at_extraordinary_deg %.3e\n",
+      edges, gap, angle, angle_at_ev);
+  EXPECT_EQ(edges, 12 + 2 * 5 * 4 + 2 * 4 * 3);  // cube, 5x5 grid, 4x4 grid
+  EXPECT_LT(gap, 1e-12);
+  EXPECT_LT(angle, 1e-6);
+}
+
+TEST(ClassicCatmullClark, SceneHasOneFullDensitySurfacePerFaceAndSyncFollowsADrag) {
+  Mesh m = grid(6);
+  for (auto& p : m.v) p.z += 0.1 * p.x * p.y;
+  Scene scene;
+  scene.patches.push_back({"cc", std::make_shared<CatmullClarkPatch>(m.v, m.f)});
+  const int density = 10;
+  TessellationCache cache;
+  const SceneSurfaces ss = evaluate_scene(scene, density, std::nullopt, cache, "test");
+  ASSERT_EQ(ss.surfaces.size(), m.f.size());
+  const std::size_t full = cache.get(UnitSquareDomain(), density)->points.size();
+  for (const SceneSurface& s : ss.surfaces) {
+    EXPECT_EQ(s.patch, 0);
+    EXPECT_EQ(s.evaluator->sample_count(), full);  // (density + 1)^2, not density / F across
+  }
+
+  SceneEvaluation live(scene, density, std::nullopt);
+  std::vector<std::vector<SurfaceJet>> before;
+  for (const SceneSurface& s : live.surfaces().surfaces) before.push_back(s.evaluator->jets());
+  const int moved = 3 * 7 + 3;  // the middle vertex of the 6x6 grid: valence 4
+  auto edited = std::shared_ptr<Patch>(scene.patches[0].patch->clone());
+  edited->set_control_point(moved, m.v[moved] + Vec3(0.3, -0.2, 0.5));
+  scene.patches[0].patch = edited;
+  const SyncStats st = live.sync(scene);
+  EXPECT_EQ(st.rebuilt_surfaces, 0u);
+  const SceneEvaluation fresh(scene, density, std::nullopt);
+  ASSERT_EQ(fresh.surfaces().surfaces.size(), live.surfaces().surfaces.size());
+  const double size = mesh_size(m);
+  double worst = 0;
+  std::size_t touched = 0, expected_touched = 0;
+  for (std::size_t f = 0; f < m.f.size(); ++f) {
+    const auto& a = live.surfaces().surfaces[f].evaluator->jets();
+    const auto& b = fresh.surfaces().surfaces[f].evaluator->jets();
+    for (std::size_t i = 0; i < a.size(); ++i) worst = std::max(worst, jet_diff(a[i], b[i]) / size);
+    // The vertex's support: the faces sharing a vertex with a face around it (the 1-ring of
+    // faces of the faces that contain it).
+    bool near = false;
+    for (const auto& g : m.f)
+      if (std::count(g.begin(), g.end(), moved))
+        for (int v : g) near = near || std::count(m.f[f].begin(), m.f[f].end(), v) > 0;
+    expected_touched += near;
+    bool changed = false;
+    for (std::size_t i = 0; i < a.size(); ++i) changed = changed || !(a[i].p == before[f][i].p);
+    touched += changed;
+    if (!near) EXPECT_FALSE(changed) << "face " << f << " is outside the vertex's support";
+  }
+  std::printf(
+      "figure catmull_clark_sync_vs_fresh_relative %.3e\n"
+      "figure catmull_clark_sync_faces_changed %zu of %zu (support %zu)\n",
+      worst, touched, m.f.size(), expected_touched);
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_EQ(touched, 16u);  // a regular vertex's bicubic B-spline support: 4x4 faces
+  EXPECT_EQ(touched, expected_touched);
 }
 
 TEST(ClassicCatmullClark, BadMeshesAreRejected) {
