@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/curve/bspline_curve.hpp"
+#include "core/curve/nurbs_curve.hpp"
 
 namespace pl {
 
@@ -86,6 +87,45 @@ std::vector<BezierCurve> spline_boundary_curves(const SplineGrid& g, const std::
   BezierCurve c0 = side_curve(g.p(), g.knots_u(), s0), c1 = side_curve(g.q(), g.knots_v(), s1);
   BezierCurve c2 = side_curve(g.p(), g.knots_u(), s2), c3 = side_curve(g.q(), g.knots_v(), s3);
   return {c0, c1, c2.reversed(), c3.reversed()};
+}
+
+Vec3 spline_boundary_point(const SplineGrid& g, const std::vector<Vec3>& points,
+                           const std::vector<double>& weights, int side, double t) {
+  // Unit square sides: 0 is v = 0 (u = t), 1 is u = 1 (v = t), 2 is v = 1 (u = 1 - t), 3 is
+  // u = 0 (v = 1 - t).
+  const bool along_u = side == 0 || side == 2;
+  const double x = (side == 2 || side == 3) ? 1.0 - t : t;
+  const std::size_t nu = g.nu(), nv = g.nv();
+  const std::size_t n_along = along_u ? nu : nv, n_across = along_u ? nv : nu;
+  const int deg_along = along_u ? g.p() : g.q(), deg_across = along_u ? g.q() : g.p();
+  const auto& k_along = along_u ? g.knots_u() : g.knots_v();
+  const auto& k_across = along_u ? g.knots_v() : g.knots_u();
+  // The fixed cross parameter: the start or end of the cross knot range.
+  const bool at_end = side == 1 || side == 2;
+  const double fixed = at_end ? k_across[n_across] : k_across[deg_across];
+  const bool rational = !weights.empty();
+  std::vector<Vec3> side_points(n_along);
+  std::vector<double> side_weights(n_along, 1.0);
+  for (std::size_t a = 0; a < n_along; ++a) {
+    std::vector<Vec3> wp(n_across), w(n_across);
+    for (std::size_t c = 0; c < n_across; ++c) {
+      const std::size_t k = along_u ? a * nv + c : c * nv + a;
+      const double wk = rational ? weights[k] : 1.0;
+      wp[c] = wk * points[k];
+      w[c] = Vec3(wk, 0, 0);
+    }
+    const Vec3 hp = BSplineCurve(deg_across, k_across, wp).evaluate(fixed).p;
+    const double hw = rational ? BSplineCurve(deg_across, k_across, w).evaluate(fixed).p.x : 1.0;
+    side_points[a] = hp / hw;
+    side_weights[a] = hw;
+  }
+  const double s = k_along[deg_along] + x * (k_along[n_along] - k_along[deg_along]);
+  if (!rational) return BSplineCurve(deg_along, k_along, side_points).evaluate(s).p;
+  return NurbsCurve(deg_along, k_along, side_points, side_weights).evaluate(s).p;
+}
+
+Vec3 BSplinePatch::boundary_point(int side, double t) const {
+  return spline_boundary_point(grid_, points_, {}, side, t);
 }
 
 std::vector<BezierCurve> BSplinePatch::boundary_curves() const {

@@ -27,6 +27,8 @@ class BSplinePatch final : public Patch {
   // as one Bézier curve on its B-spline control polygon, which has the same end points but is
   // not the side (the interface has no piecewise curve).
   std::vector<BezierCurve> boundary_curves() const override;
+  // The side's B-spline curve (spline_boundary_point), exact for any knots.
+  Vec3 boundary_point(int side, double t) const override;
 
   const SplineGrid& grid() const { return grid_; }
   // The same surface with knot t (in the knot range, not the domain) inserted in u or v.
@@ -41,5 +43,13 @@ class BSplinePatch final : public Patch {
 // Side curves of a spline grid of (homogeneous, when weighted) points; shared with NURBS.
 std::vector<BezierCurve> spline_boundary_curves(const SplineGrid& g,
                                                 const std::vector<Vec3>& points);
+
+// The point at side parameter t of side `side` of a B-spline (weights empty) or NURBS grid,
+// through the curve classes (BSplineCurve, NurbsCurve), independently of SplineGrid::local():
+// the cross-direction curves of the homogeneous points at the side's fixed knot value give the
+// side's own (rational) B-spline control points, whose curve is then evaluated along the side.
+// Exact for any number of spans, clamped or not.
+Vec3 spline_boundary_point(const SplineGrid& g, const std::vector<Vec3>& points,
+                           const std::vector<double>& weights, int side, double t);
 
 }  // namespace pl

@@ -153,4 +153,34 @@ std::vector<BezierCurve> CoonsNetworkPatch::boundary_curves() const {
   return {BezierCurve(s0), BezierCurve(s1), BezierCurve(s2), BezierCurve(s3)};
 }
 
+Vec3 CoonsNetworkPatch::boundary_point(int side, double t) const {
+  const auto P = [&](std::size_t i, std::size_t j, int q) {
+    return points_[(i * nt_ + j) * 4 + q];
+  };
+  // The cell a side coordinate x in [0,1] falls in among n cells, and its local parameter.
+  const auto split = [](double x, std::size_t n) {
+    const std::size_t c =
+        std::min(n - 1, static_cast<std::size_t>(std::max(0.0, std::floor(x * double(n)))));
+    return std::pair<std::size_t, double>(c, x * double(n) - double(c));
+  };
+  const std::size_t I = ns_ - 1, J = nt_ - 1;
+  const Vec2 x = domain_.side_point(side, t);
+  if (side == 0 || side == 2) {  // a row: cubics in s scaled by the cell's bottom/top length
+    const std::size_t j = side == 0 ? 0 : J;
+    const auto [ci, a] = split(x.x, I);
+    const CellLengths L = cell_lengths(ci, side == 0 ? 0 : J - 1);
+    const double S = side == 0 ? L.S0 : L.S1;
+    return HermiteCurve(P(ci, j, 0), P(ci + 1, j, 0), S * P(ci, j, 1), S * P(ci + 1, j, 1))
+        .evaluate(a)
+        .p;
+  }
+  const std::size_t i = side == 1 ? I : 0;  // a column: cubics in t, right/left lengths
+  const auto [cj, b] = split(x.y, J);
+  const CellLengths L = cell_lengths(side == 1 ? I - 1 : 0, cj);
+  const double T = side == 1 ? L.T1 : L.T0;
+  return HermiteCurve(P(i, cj, 0), P(i, cj + 1, 0), T * P(i, cj, 2), T * P(i, cj + 1, 2))
+      .evaluate(b)
+      .p;
+}
+
 }  // namespace pl

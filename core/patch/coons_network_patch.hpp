@@ -39,6 +39,9 @@ class CoonsNetworkPatch final : public Patch {
   // as the Bézier curve on its node positions (same end points; the interface has no piecewise
   // curve).
   std::vector<BezierCurve> boundary_curves() const override;
+  // The side's own piecewise Hermite cubic (each cell's boundary curve of its own length) at the
+  // side parameter, exact for any number of cells.
+  Vec3 boundary_point(int side, double t) const override;
 
   std::size_t ns() const { return ns_; }
   std::size_t nt() const { return nt_; }

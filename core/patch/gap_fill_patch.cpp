@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/curve/hermite_curve.hpp"
 #include "core/math/bspline_basis.hpp"
 #include "core/math/cubic_bases.hpp"
 
@@ -167,6 +168,38 @@ std::vector<BezierCurve> GapFillPatch::boundary_curves() const {
   const auto P = [&](int piece, double u, double y) { return piece_jet(piece, {u, y}).p; };
   return {BezierCurve({P(0, 0, 0), P(0, 1, 0), P(2, 0, 0), P(2, 1, 0)}), rs[1],
           BezierCurve({P(2, 1, 1), P(2, 0, 1), P(0, 1, 1), P(0, 0, 1)}), qs[3]};
+}
+
+Vec3 GapFillPatch::boundary_point(int side, double t) const {
+  if (side == 1) return r_->boundary_point(1, t);
+  if (side == 3) return q_->boundary_point(3, t);
+  // Sides 0 (y = 0, x = t) and 2 (y = 1, x = 1 - t) cross q, the fill and r.
+  const double x = side == 0 ? t : 1.0 - t, y = side == 0 ? 0.0 : 1.0;
+  const auto along = [&](double local) { return side == 0 ? local : 1.0 - local; };
+  if (x < 1.0 / 3) return q_->boundary_point(side, along(3 * x));
+  if (x >= 2.0 / 3) return r_->boundary_point(side, along(3 * x - 2));
+  const SplineGrid &gq = q_->grid(), &gr = r_->grid();
+  // The curves q(d, v), q_u(d, v), r(e, v), r_u(e, v) of the current points (q clamped at d,
+  // r at e, so the end columns and their differences are the curves' control points).
+  std::vector<Vec3> qe, qc, re, rc;
+  for (std::size_t j = 0; j < gq.nv(); ++j) {
+    qe.push_back(q_->control_point((gq.nu() - 1) * gq.nv() + j));
+    qc.push_back(kq_ * (qe.back() - q_->control_point((gq.nu() - 2) * gq.nv() + j)));
+  }
+  for (std::size_t j = 0; j < gr.nv(); ++j) {
+    re.push_back(r_->control_point(j));
+    rc.push_back(kr_ * (r_->control_point(gr.nv() + j) - re.back()));
+  }
+  const double vq = gq.v_of(y), vr = gr.v_of(y);
+  // The frozen scale functions c1 = d / |q_u|, g1 = d / |r_u| (construction-time curves).
+  const double d = glm::length(q_end_->evaluate(vq).p - r_end_->evaluate(vr).p);
+  const double c1 = d / glm::length(q_cross_->evaluate(vq).p),
+               g1 = d / glm::length(r_cross_->evaluate(vr).p);
+  const HermiteCurve fill(BSplineCurve(gq.q(), gq.knots_v(), qe).evaluate(vq).p,
+                          BSplineCurve(gr.q(), gr.knots_v(), re).evaluate(vr).p,
+                          c1 * BSplineCurve(gq.q(), gq.knots_v(), qc).evaluate(vq).p,
+                          g1 * BSplineCurve(gr.q(), gr.knots_v(), rc).evaluate(vr).p);
+  return fill.evaluate(3 * x - 1).p;
 }
 
 }  // namespace pl

@@ -37,6 +37,10 @@ class GapFillPatch final : public Patch {
   // Sides 1 and 3 are r's and q's outer sides; sides 0 and 2 cross three pieces and are returned
   // as the Bézier curve on their four break points (the interface has no piecewise curve).
   std::vector<BezierCurve> boundary_curves() const override;
+  // Every side exactly from the defining curves: q's and r's own sides (B-spline curves) and,
+  // on the fill's stretch of sides 0 and 2, the cubic Hermite curve between q(d, v) and r(e, v)
+  // with the scaled cross derivatives, built from curves of the current points.
+  Vec3 boundary_point(int side, double t) const override;
 
   const BSplinePatch& q() const { return *q_; }
   const BSplinePatch& r() const { return *r_; }

@@ -116,6 +116,10 @@ void NurbsPatch::influence(std::size_t k, std::span<const Vec2> xs, std::span<Je
   }
 }
 
+Vec3 NurbsPatch::boundary_point(int side, double t) const {
+  return spline_boundary_point(grid_, points_, weights_, side, t);
+}
+
 std::vector<BezierCurve> NurbsPatch::boundary_curves() const {
   return spline_boundary_curves(grid_, points_);
 }

@@ -32,6 +32,8 @@ class NurbsPatch final : public Patch {
   // polygon as a Bézier curve (same end points for clamped knots): the interface has no
   // rational or piecewise curve.
   std::vector<BezierCurve> boundary_curves() const override;
+  // The side's NURBS curve (spline_boundary_point), exact for any knots and weights.
+  Vec3 boundary_point(int side, double t) const override;
 
   const SplineGrid& grid() const { return grid_; }
   const std::vector<double>& weights() const { return weights_; }

@@ -192,4 +192,15 @@ std::vector<BezierCurve> PairJoinPatch::boundary_curves() const {
           BezierCurve({A.at(0, n), A.at(0, 0), B.at(0, n)})};
 }
 
+Vec3 PairJoinPatch::boundary_point(int side, double t) const {
+  if (side == 0 || side == 2) return boundary_curves().at(side).point(t);  // one Bézier row
+  const int n = order_, i = side == 1 ? kFinalDegree : 0;
+  const double v = side == 1 ? t : 1.0 - t;
+  // The end column of A (v >= 1/2, A(u, 2v - 1)) or B (v < 1/2, B(u, 1 - 2v)) as a curve.
+  const BezierPatch& P = v >= 0.5 ? *final_[0] : *final_[1];
+  std::vector<Vec3> column;
+  for (int j = 0; j <= n; ++j) column.push_back(P.at(i, j));
+  return BezierCurve(column).point(v >= 0.5 ? 2 * v - 1 : 1 - 2 * v);
+}
+
 }  // namespace pl

@@ -44,6 +44,9 @@ class PairJoinPatch final : public Patch {
   // Sides 0 and 2 are exact (B's and A's far rows); sides 1 and 3 are two pieces and are returned
   // as the Bézier curve on their three end points (the interface has no piecewise curve).
   std::vector<BezierCurve> boundary_curves() const override;
+  // Every side exactly: sides 1 and 3 are B's and A's end columns (Bézier curves of degree
+  // `order`) joined at the junction v = 1/2.
+  Vec3 boundary_point(int side, double t) const override;
 
   int order() const { return order_; }
   int aux_degree_u() const { return du_; }

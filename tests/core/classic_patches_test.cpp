@@ -102,6 +102,43 @@ TEST(ClassicPatches, BSplinePatchAgreesWithDeBoorAndKnotInsertion) {
   EXPECT_LT(test::interface_mismatch(p, std::vector<Vec2>(xs.begin(), xs.begin() + 30)), 1e-12);
 }
 
+TEST(ClassicPatches, MultiSpanUnclampedSidesAreExactBoundaryPoints) {
+  // Unclamped, non-uniform knots in both directions: no side is a row of control points, and
+  // every side has several spans. boundary_point (curve classes) against homogeneous de Boor at
+  // the side's (u, v), for a B-spline and a NURBS with unequal weights.
+  const std::vector<double> U = {-0.5, -0.2, 0, 0.1, 0.2, 0.25, 0.6, 1, 1.3, 1.4, 2};  // cubic
+  const std::vector<double> V = {-1, -0.6, -0.1, 0.5, 0.5, 2, 3, 3.5, 4};              // quadratic
+  const std::size_t nu = 7, nv = 6;
+  const auto pts = test::random_points(nu * nv, 34);
+  std::vector<double> w;
+  for (std::size_t k = 0; k < nu * nv; ++k) w.push_back(0.5 + 0.1 * double((k * 7) % 11));
+  const BSplinePatch b(3, 2, U, V, nu, nv, pts);
+  const NurbsPatch n(3, 2, U, V, nu, nv, pts, w);
+  std::vector<glm::dvec4> hb, hn;
+  for (std::size_t k = 0; k < pts.size(); ++k)
+    hb.emplace_back(pts[k], 1.0), hn.emplace_back(w[k] * pts[k], w[k]);
+  double worst_b = 0, worst_n = 0, polygon_b = 0;
+  for (int side = 0; side < 4; ++side)
+    for (int k = 0; k <= 40; ++k) {
+      const double t = k / 40.0;
+      const Vec2 x = b.domain().side_point(side, t);
+      const double u = b.grid().u_of(x.x), v = b.grid().v_of(x.y);
+      const Vec3 rb(test::de_boor_surface(3, 2, U, V, nu, nv, hb, u, v));
+      const glm::dvec4 h = test::de_boor_surface(3, 2, U, V, nu, nv, hn, u, v);
+      worst_b = std::max(worst_b, max_abs(b.boundary_point(side, t) - rb));
+      worst_n = std::max(worst_n, max_abs(n.boundary_point(side, t) - Vec3(h) / h.w));
+      polygon_b = std::max(polygon_b, max_abs(b.boundary_curves()[side].point(t) - rb));
+    }
+  std::printf(
+      "figure bspline_unclamped_boundary_point_vs_de_boor %.3e\n"
+      "figure nurbs_unclamped_boundary_point_vs_de_boor %.3e\n"
+      "figure bspline_unclamped_control_polygon_bezier_deviation %.3e\n",
+      worst_b, worst_n, polygon_b);
+  EXPECT_LT(worst_b, 1e-13);
+  EXPECT_LT(worst_n, 1e-13);
+  EXPECT_GT(polygon_b, 1e-3);  // the single-Bézier fallback is really not the side here
+}
+
 TEST(ClassicPatches, BSplineDragTouchesOnlyTheSupport) {
   const std::size_t n = 12;
   const BSplinePatch p(3, 3, BSplineCurve::clamped_uniform_knots(3, n),
