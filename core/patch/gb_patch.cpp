@@ -1,5 +1,6 @@
 #include "core/patch/gb_patch.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <stdexcept>
 
@@ -82,18 +83,11 @@ GBPatch::GBPatch(int sides, int degree, std::vector<Vec3> points)
         m = Mu::Zero;
       mu_[k * (d + 1) + j] = m;
     }
-  rows_.resize(3 * l);
-  for (int k = 0; k < l; ++k)
-    for (int j = 0; j <= d; ++j) {
-      const Mu m = mu(j, k);
-      if (m == Mu::Zero) continue;
-      const uint8_t g = m == Mu::Alpha ? 1 : m == Mu::Beta ? 2 : 0;
-      rows_[k * 3 + g].push_back({j, g, m == Mu::Half ? 0.5 : 1.0});
-    }
   update_relative(0);
   grid_.resize(n_ * l * (d + 1));
   occurrences_.assign(size(), {});
   ribbons_of_.assign(size(), 0);
+  weighted_of_.assign(size(), 0);
   for (int i = 0; i < n_; ++i)
     for (int k = 0; k < l; ++k)
       for (int j = 0; j <= d; ++j) {
@@ -102,8 +96,54 @@ GBPatch::GBPatch(int sides, int degree, std::vector<Vec3> points)
         if (mu(j, k) != Mu::Zero) {
           occurrences_[s].push_back({i, j, k});
           ribbons_of_[s] |= 1u << i;
+          if (mu(j, k) == Mu::Alpha || mu(j, k) == Mu::Beta) weighted_of_[s] |= 1u << i;
         }
       }
+  span_.assign(3 * l, Span{d + 1, -1});
+  for (int k = 0; k < l; ++k)
+    for (int j = 0; j <= d; ++j) {
+      const Mu m = mu(j, k);
+      if (m == Mu::Zero) continue;
+      const auto widen = [&](int g) {
+        Span& sp = span_[g * l + k];
+        sp.first = std::min(sp.first, j), sp.last = std::max(sp.last, j);
+      };
+      widen(m == Mu::Alpha ? 1 : 0);
+      if (m == Mu::Beta) widen(2);
+    }
+  fill_dense(0);
+}
+
+void GBPatch::fill_dense(std::size_t k) {
+  const int d = d_, l = l_;
+  const auto set = [&](int i, int j, int r) {
+    const Vec3& P = relative_[grid_[(i * l + r) * (d + 1) + j]];
+    const auto at = [&](int g) -> Vec3& { return dense_[((i * 3 + g) * l + r) * (d + 1) + j]; };
+    switch (mu(j, r)) {
+      case Mu::One:
+        at(0) = P;
+        break;
+      case Mu::Half:
+        at(0) = 0.5 * P;
+        break;
+      case Mu::Alpha:
+        at(1) = P;
+        break;
+      case Mu::Beta:
+        at(0) = P, at(2) = P;
+        break;
+      case Mu::Zero:
+        break;
+    }
+  };
+  if (k == 0) {  // C_0 moves every relative point
+    dense_.assign(static_cast<std::size_t>(n_) * 3 * l * (d + 1), Vec3(0));
+    for (int i = 0; i < n_; ++i)
+      for (int r = 0; r < l; ++r)
+        for (int j = 0; j <= d; ++j) set(i, j, r);
+    return;
+  }
+  for (const Occurrence& o : occurrences_[k]) set(o.i, o.j, o.k);
 }
 
 std::size_t GBPatch::index(int i, int j, int k) const {
@@ -133,14 +173,16 @@ std::vector<BezierCurve> GBPatch::boundary_curves() const {
   return curves;
 }
 
-void GBPatch::local(Vec2 x, Local& out, uint32_t ribbons) const {
-  // Ribbon i needs s_i, h_i, alpha_i and (for beta_i) alpha_{i+1}; alpha_i needs h_{i-1}, h_i.
+void GBPatch::local(Vec2 x, Local& out, uint32_t ribbons, uint32_t weighted) const {
+  // Ribbon i needs s_i, h_i, and if weighted alpha_i and (for beta_i) alpha_{i+1}; alpha_i needs
+  // h_{i-1}, h_i. An influence column of a point with constant weights needs no corner weight.
   const int n = n_;
   const uint32_t all = (1u << n) - 1;
   const auto rotl = [&](uint32_t m) { return ((m << 1) | (m >> (n - 1))) & all; };
   const auto rotr = [&](uint32_t m) { return ((m >> 1) | ((m & 1u) << (n - 1))) & all; };
   ribbons &= all;
-  const uint32_t alphas = d_ >= 3 ? ribbons | rotl(ribbons) : 0;  // ribbon i or i-1 is asked
+  weighted &= ribbons;
+  const uint32_t alphas = d_ >= 3 ? weighted | rotl(weighted) : 0;  // ribbon i or i-1 is asked
   const uint32_t sides = ribbons | alphas | rotr(alphas);
   params_.evaluate(x, {}, std::span(out.s.data(), n), std::span(out.h.data(), n), sides);
   if (d_ < 3) return;  // no corner weights
@@ -152,7 +194,7 @@ void GBPatch::local(Vec2 x, Local& out, uint32_t ribbons) const {
   // beta_i = h_{i+1} / (h_{i+1} + h_i) = 1 - alpha_{i+1}: the two weights of a shared corner
   // point then sum to one exactly.
   for (int i = 0; i < n; ++i)
-    if (ribbons >> i & 1u) out.beta[i] = Jet(1.0) - out.alpha[params_.wrap(i + 1)];
+    if (weighted >> i & 1u) out.beta[i] = Jet(1.0) - out.alpha[params_.wrap(i + 1)];
 }
 
 int GBPatch::vertex_at(Vec2 x) const {
@@ -197,6 +239,7 @@ void GBPatch::update_relative(std::size_t k) {
   } else {
     relative_[k] = points_[k] - points_[0];
   }
+  if (!dense_.empty()) fill_dense(k);  // empty only while the constructor builds the tables
 }
 
 SurfaceJet GBPatch::evaluate_regular(Vec2 x) const {
@@ -204,30 +247,30 @@ SurfaceJet GBPatch::evaluate_regular(Vec2 x) const {
   // Ribbon i splits into polynomial groups in (s_i, h_i): constant weights (C), alpha (A) and
   // beta (B) ones. With beta_i = 1 - alpha_{i+1},
   //   sum_i (C_i + alpha_i A_i + beta_i B_i) = sum_i (C_i + B_i) + sum_i alpha_i (A_i - B_{i-1}),
-  // so each ribbon needs two chain rules and one product with a rational weight.
+  // so each ribbon needs three chain rules and one product with a rational weight. The groups'
+  // points come from dense_, laid out so the row sums run over contiguous memory.
   Local L;
   local(x, L);
-  const int d = d_, l = l_;
+  const int d = d_, l = l_, groups = d >= 3 ? 3 : 1;
   SurfaceJet S;
   S.p = points_[0];
   Scratch<SurfaceJet, kMaxSides> A, B;
   for (int i = 0; i < n_; ++i) {
     const Jet &s = L.s[i], &h = L.h[i];
     const BernsteinTable bs(d, s.f), bh(d, h.f);
-    SHJet G[3];  // 0: C (+ B below), 1: A, 2: B
-    for (int k = 0; k < l; ++k) {
-      const uint32_t* row = &grid_[(i * l + k) * (d + 1)];
-      const double h0 = bh.d0[k], h1 = bh.d1[k], h2 = bh.d2[k];
-      for (int g = 0; g < 3; ++g) {
-        const auto& entries = rows_[k * 3 + g];
-        if (entries.empty()) continue;
+    SHJet G[3];  // 0: C + B, 1: A, 2: B
+    for (int g = 0; g < groups; ++g)
+      for (int k = 0; k < l; ++k) {
+        const Span sp = span_[g * l + k];
+        if (sp.first > sp.last) continue;
+        const Vec3* P = &dense_[((i * 3 + g) * l + k) * (d + 1)];
         Vec3 r0(0), r1(0), r2(0);
-        for (const RowEntry& e : entries) {
-          const Vec3& P = relative_[row[e.j]];
-          r0 += (e.c * bs.d0[e.j]) * P;
-          r1 += (e.c * bs.d1[e.j]) * P;
-          r2 += (e.c * bs.d2[e.j]) * P;
+        for (int j = sp.first; j <= sp.last; ++j) {
+          r0 += bs.d0[j] * P[j];
+          r1 += bs.d1[j] * P[j];
+          r2 += bs.d2[j] * P[j];
         }
+        const double h0 = bh.d0[k], h1 = bh.d1[k], h2 = bh.d2[k];
         G[g].g += h0 * r0;
         G[g].gs += h0 * r1;
         G[g].gss += h0 * r2;
@@ -235,9 +278,7 @@ SurfaceJet GBPatch::evaluate_regular(Vec2 x) const {
         G[g].gsh += h1 * r1;
         G[g].ghh += h2 * r0;
       }
-    }
     if (d >= 3) {
-      G[0] += G[2];
       A[i] = to_uv(G[1], s, h);
       B[i] = to_uv(G[2], s, h);
     }
@@ -282,7 +323,7 @@ void GBPatch::basis_regular(Vec2 x, std::span<Jet> out) const {
 
 Jet GBPatch::influence_regular(std::size_t k, Vec2 x) const {
   Local L;
-  local(x, L, k == 0 ? ~0u : ribbons_of_[k]);
+  local(x, L, k == 0 ? ~0u : ribbons_of_[k], k == 0 ? ~0u : weighted_of_[k]);
   if (k == 0) {  // the central weight needs every ribbon
     Jet total;
     for (int i = 0; i < n_; ++i) {

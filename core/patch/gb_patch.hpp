@@ -67,8 +67,9 @@ class GBPatch final : public Patch {
 
  private:
   struct Local;  // per-point parameters, shared by evaluate, basis and influence
-  // Parameters of the ribbons whose bit is set (with what their corner weights need).
-  void local(Vec2 x, Local& out, uint32_t ribbons = ~0u) const;
+  // Parameters s, h of the ribbons whose bit is set in `ribbons`, and the corner weights of those
+  // set in `weighted` (a subset of ribbons) with the h's they need.
+  void local(Vec2 x, Local& out, uint32_t ribbons = ~0u, uint32_t weighted = ~0u) const;
   SurfaceJet evaluate_regular(Vec2 x) const;
   void basis_regular(Vec2 x, std::span<Jet> out) const;
   Jet influence_regular(std::size_t k, Vec2 x) const;
@@ -80,15 +81,7 @@ class GBPatch final : public Patch {
   PolygonParameters params_;
   void update_relative(std::size_t k);
 
-  std::vector<Mu> mu_;  // [k * (d+1) + j]
-  // The non-zero weights of row k and group g (0 constant, 1 alpha, 2 beta) at rows_[3k + g]:
-  // position j and constant factor c.
-  struct RowEntry {
-    int j;
-    uint8_t group;
-    double c;
-  };
-  std::vector<std::vector<RowEntry>> rows_;
+  std::vector<Mu> mu_;          // [k * (d+1) + j]
   std::vector<Vec3> relative_;  // P_k - C_0: evaluate() needs no central weight
   std::vector<uint32_t> grid_;  // [(i * l + k) * (d+1) + j] -> stored index
   // Where each stored point appears in the ribbon grids: (i, j, k) with a non-zero mu.
@@ -96,7 +89,19 @@ class GBPatch final : public Patch {
     int i, j, k;
   };
   std::vector<std::vector<Occurrence>> occurrences_;
-  std::vector<uint32_t> ribbons_of_;  // bit i: the stored point has a non-zero weight in ribbon i
+  std::vector<uint32_t> ribbons_of_;   // bit i: the stored point has a non-zero weight in ribbon i
+  std::vector<uint32_t> weighted_of_;  // bit i: ... and that weight is alpha_i or beta_i
+  // evaluate_regular's dense tables, contiguous so the row sums need no index gather:
+  // dense_[((i * 3 + g) * l + k) * (d+1) + j] = c * (P - C_0) for the grid point (i, j, k) if its
+  // weight group is g (0: constant or beta, 1: alpha, 2: beta; c = 1/2 on the diagonals), else 0.
+  // Group 0 includes beta because sum_i beta_i B_i = sum_i B_i - sum_i alpha_{i+1} B_i.
+  std::vector<Vec3> dense_;
+  // The j range [first, last] of the non-zero entries of group g, row k: span_[g * l + k].
+  struct Span {
+    int first, last;
+  };
+  std::vector<Span> span_;
+  void fill_dense(std::size_t k);  // refreshes the entries of stored point k (all for k = 0)
 };
 
 }  // namespace pl

@@ -322,3 +322,42 @@ TEST(GBPatch, IncrementalDragEqualsFullEvaluation) {
 
 }  // namespace
 }  // namespace pl
+
+namespace pl {
+namespace {
+
+// evaluate() and influence() run on tables derived from the control points (evaluate_regular's
+// dense per-ribbon rows, the corner-weight masks of influence): after edits of every kind of
+// point (central, boundary, shared corner block, inner) they must still equal the basis sum.
+TEST(GBPatch, FastPathsFollowControlPointEdits) {
+  for (int n : {3, 5, 6})
+    for (int d : {2, 3, 5, 6}) {
+      GBPatch g = test::random_gb(n, d, 21);
+      const auto xs = interior_points(g.polygon(), 40, 22, 0);
+      std::mt19937_64 rng(23);
+      std::uniform_real_distribution<double> r(-2, 2);
+      std::vector<Jet> phi(g.size()), col(xs.size());
+      for (std::size_t k : {std::size_t(0), std::size_t(1), g.index(1, 0, 0), g.index(2, 1, 0),
+                            g.index(0, d / 2, g.layers() - 1), g.size() - 1}) {
+        g.set_control_point(k, g.control_point(k) + Vec3(r(rng), r(rng), r(rng)));
+        const double scale = test::bbox_diagonal(g.control_points());
+        for (Vec2 x : xs) {
+          g.basis(x, phi);
+          const JetError e = jet_error(combine(g.control_points(), phi), g.evaluate(x));
+          ASSERT_LT(std::max({e.p, e.d1, e.d2}) / scale, 1e-12) << n << " " << d << " k=" << k;
+        }
+        g.influence(k, xs, col);
+        for (std::size_t p = 0; p < xs.size(); ++p) {
+          g.basis(xs[p], phi);
+          const double m = std::max({1.0, std::fabs(phi[k].fuu), std::fabs(phi[k].fvv)});
+          for (double diff :
+               {col[p].f - phi[k].f, col[p].fu - phi[k].fu, col[p].fv - phi[k].fv,
+                col[p].fuu - phi[k].fuu, col[p].fuv - phi[k].fuv, col[p].fvv - phi[k].fvv})
+            ASSERT_LT(std::fabs(diff) / m, 1e-12) << n << " " << d << " k=" << k;
+        }
+      }
+    }
+}
+
+}  // namespace
+}  // namespace pl
