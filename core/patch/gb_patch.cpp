@@ -225,6 +225,18 @@ SurfaceJet to_uv(const SHJet& G, const Jet& s, const Jet& h) {
           (s.fv * s.fv) * G.gss + (2 * s.fv * h.fv) * G.gsh + (h.fv * h.fv) * G.ghh + s.fvv * G.gs +
               h.fvv * G.gh};
 }
+// S += to_uv(G, s, h) without the temporary (the same operations, so the same rounding).
+void add_uv(SurfaceJet& S, const SHJet& G, const Jet& s, const Jet& h) {
+  S.p += G.g;
+  S.su += s.fu * G.gs + h.fu * G.gh;
+  S.sv += s.fv * G.gs + h.fv * G.gh;
+  S.suu += (s.fu * s.fu) * G.gss + (2 * s.fu * h.fu) * G.gsh + (h.fu * h.fu) * G.ghh +
+           s.fuu * G.gs + h.fuu * G.gh;
+  S.suv += (s.fu * s.fv) * G.gss + (s.fu * h.fv + s.fv * h.fu) * G.gsh + (h.fu * h.fv) * G.ghh +
+           s.fuv * G.gs + h.fuv * G.gh;
+  S.svv += (s.fv * s.fv) * G.gss + (2 * s.fv * h.fv) * G.gsh + (h.fv * h.fv) * G.ghh +
+           s.fvv * G.gs + h.fvv * G.gh;
+}
 }  // namespace
 
 void GBPatch::set_control_point(std::size_t k, const Vec3& p) {
@@ -282,7 +294,7 @@ SurfaceJet GBPatch::evaluate_regular(Vec2 x) const {
       A[i] = to_uv(G[1], s, h);
       B[i] = to_uv(G[2], s, h);
     }
-    add(S, to_uv(G[0], s, h));
+    add_uv(S, G[0], s, h);
   }
   if (d >= 3)
     for (int i = 0; i < n_; ++i) {
