@@ -1,5 +1,6 @@
-// {"type": "catmull-clark", "vertices": [points], "faces": [[a, b, c, d], ...]}: a quad control
-// mesh, faces counter-clockwise seen from outside (see catmull_clark_patch.hpp).
+// {"type": "catmull-clark", "vertices": [points], "faces": [[a, b, c, d], ...]}: a polygon control
+// mesh (3 or more vertices a face), faces counter-clockwise seen from outside (see
+// catmull_clark_patch.hpp).
 #include "core/io/catmull_clark_codec.hpp"
 
 #include "core/patch/catmull_clark_patch.hpp"
@@ -15,7 +16,10 @@ std::unique_ptr<Patch> read_catmull_clark(const JsonNode& node) {
   if (items.empty()) fn.fail("a Catmull-Clark mesh needs at least one face");
   for (const JsonNode& f : items) {
     std::vector<int> loop;
-    for (const JsonNode& v : f.items(4)) {
+    const auto corners = f.items();
+    if (corners.size() < 3)
+      f.fail("a face needs at least 3 vertices, got " + std::to_string(corners.size()));
+    for (const JsonNode& v : corners) {
       const long long i = v.integer();
       if (i < 0 || i >= static_cast<long long>(vertices.size()))
         v.fail("vertex " + std::to_string(i) + " does not exist (" +

@@ -2,6 +2,7 @@
 
 #include <opensubdiv/far/patchMap.h>
 #include <opensubdiv/far/patchTableFactory.h>
+#include <opensubdiv/far/ptexIndices.h>
 #include <opensubdiv/far/stencilTableFactory.h>
 #include <opensubdiv/far/topologyDescriptor.h>
 
@@ -31,10 +32,10 @@ CatmullClarkLimit::CatmullClarkLimit(std::size_t n, const std::vector<std::vecto
   if (faces_.empty()) throw std::invalid_argument("a Catmull-Clark mesh needs at least one face");
   std::vector<int> used(n, 0);
   for (std::size_t f = 0; f < faces_.size(); ++f) {
-    if (faces_[f].size() != 4)
+    if (faces_[f].size() < 3)
       throw std::invalid_argument("face " + std::to_string(f) + " has " +
                                   std::to_string(faces_[f].size()) +
-                                  " vertices: only quad control meshes are supported");
+                                  " vertices: a face needs at least 3");
     for (int v : faces_[f]) {
       if (v < 0 || static_cast<std::size_t>(v) >= n)
         throw std::invalid_argument("face " + std::to_string(f) + ": vertex " + std::to_string(v) +
@@ -57,8 +58,11 @@ CatmullClarkLimit::CatmullClarkLimit(std::size_t n, const std::vector<std::vecto
                                   " makes the mesh non-manifold or flips its orientation");
   }
 
-  std::vector<int> counts(faces_.size(), 4), indices;
-  for (const auto& f : faces_) indices.insert(indices.end(), f.begin(), f.end());
+  std::vector<int> counts, indices;
+  for (const auto& f : faces_) {
+    counts.push_back(static_cast<int>(f.size()));
+    indices.insert(indices.end(), f.begin(), f.end());
+  }
   Far::TopologyDescriptor desc;
   desc.numVertices = static_cast<int>(n);
   desc.numFaces = static_cast<int>(faces_.size());
@@ -69,6 +73,14 @@ CatmullClarkLimit::CatmullClarkLimit(std::size_t n, const std::vector<std::vecto
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
   osd_->refiner.reset(Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, sdc)));
   if (!osd_->refiner) throw std::invalid_argument("OpenSubdiv rejected the control mesh topology");
+  // Catmull-Clark quadrangulates non-quad faces: n ptex faces each, consecutive per face.
+  const Far::PtexIndices ptex(*osd_->refiner);
+  for (std::size_t f = 0; f < faces_.size(); ++f) {
+    const std::size_t sub = faces_[f].size() == 4 ? 1 : faces_[f].size();
+    if (ptex.GetFaceId(static_cast<int>(f)) != static_cast<int>(ptex_face_.size()))
+      throw std::logic_error("OpenSubdiv numbered ptex faces out of face order");
+    ptex_face_.insert(ptex_face_.end(), sub, static_cast<int>(f));
+  }
 
   Far::PatchTableFactory::Options po(10);
   po.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
@@ -99,13 +111,20 @@ bool CatmullClarkLimit::boundary_vertex(int v) const {
   return osd_->mesh.is_boundary(OpenMesh::VertexHandle(v));
 }
 
-std::vector<std::pair<int, Jet>> CatmullClarkLimit::basis(int face, Vec2 uv) const {
+std::vector<std::pair<int, Jet>> CatmullClarkLimit::basis(int ptex, Vec2 uv) const {
   // Points outside the face (finite differences at its border) use the face's own patch there.
   const double u = std::clamp(uv.x, 0.0, 1.0), v = std::clamp(uv.y, 0.0, 1.0);
-  const Far::PatchTable::PatchHandle* h = osd_->map->FindPatch(face, u, v);
+  const Far::PatchTable::PatchHandle* h = osd_->map->FindPatch(ptex, u, v);
   if (!h) throw std::logic_error("OpenSubdiv found no patch for a face parameter");
   double w[20], wu[20], wv[20], wuu[20], wuv[20], wvv[20];
   osd_->patches->EvaluateBasis(*h, uv.x, uv.y, w, wu, wv, wuu, wuv, wvv);
+  // Patches under a non-quad face's sub-face: EvaluateBasis scales derivatives by 2^depth, but
+  // the ptex (u, v) of a sub-face spans 2^(depth-1) patches (PatchParam::GetParamFraction), so
+  // its derivatives come out twice too large per order (checked against finite differences in
+  // the tests). Scaled back to the ptex face's own (u, v).
+  if (osd_->patches->GetPatchParam(*h).NonQuadRoot())
+    for (int i = 0; i < 20; ++i)
+      wu[i] *= 0.5, wv[i] *= 0.5, wuu[i] *= 0.25, wuv[i] *= 0.25, wvv[i] *= 0.25;
   const Far::ConstIndexArray cvs = osd_->patches->GetPatchVertices(*h);
   std::map<int, Jet> acc;
   for (int i = 0; i < cvs.size(); ++i) {
@@ -118,11 +137,11 @@ std::vector<std::pair<int, Jet>> CatmullClarkLimit::basis(int face, Vec2 uv) con
   return {acc.begin(), acc.end()};
 }
 
-Vec3 CatmullClarkLimit::limit_point(int face, Vec2 uv, const std::vector<Vec3>& points) const {
+Vec3 CatmullClarkLimit::limit_point(int ptex, Vec2 uv, const std::vector<Vec3>& points) const {
   using Factory = Far::LimitStencilTableFactoryReal<double>;
   const double s = std::clamp(uv.x, 0.0, 1.0), t = std::clamp(uv.y, 0.0, 1.0);
   Factory::LocationArray loc;
-  loc.ptexIdx = face;
+  loc.ptexIdx = ptex;
   loc.numLocations = 1;
   loc.s = &s;
   loc.t = &t;

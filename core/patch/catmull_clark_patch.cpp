@@ -33,9 +33,9 @@ CatmullClarkFacePatch::CatmullClarkFacePatch(std::shared_ptr<const CatmullClarkL
       limit_(std::move(limit)),
       face_(face),
       support_(points_.size(), 0) {
-  // The limit over a face depends on the faces around its four vertices.
+  // The limit over a (ptex) face depends on the faces around its base face's vertices.
   const auto& faces = limit_->faces();
-  const auto& mine = faces[face_];
+  const auto& mine = faces[limit_->ptex_face(face_)];
   for (const auto& f : faces)
     if (std::any_of(f.begin(), f.end(),
                     [&](int v) { return std::count(mine.begin(), mine.end(), v) > 0; }))
@@ -108,8 +108,8 @@ Strip strip_of(Vec2 x, std::size_t faces) {
 void CatmullClarkPatch::basis(Vec2 x, std::span<Jet> out) const {
   assert(out.size() == size());
   std::fill(out.begin(), out.end(), Jet(0.0));
-  const Strip s = strip_of(x, limit_->face_count());
-  const double F = double(limit_->face_count());
+  const Strip s = strip_of(x, limit_->ptex_count());
+  const double F = double(limit_->ptex_count());
   for (auto [k, j] : limit_->basis(s.face, s.uv)) {
     j.fu *= F, j.fuu *= F * F, j.fuv *= F;
     out[k] = j;
@@ -117,8 +117,8 @@ void CatmullClarkPatch::basis(Vec2 x, std::span<Jet> out) const {
 }
 
 SurfaceJet CatmullClarkPatch::evaluate(Vec2 x) const {
-  const Strip s = strip_of(x, limit_->face_count());
-  const double F = double(limit_->face_count());
+  const Strip s = strip_of(x, limit_->ptex_count());
+  const double F = double(limit_->ptex_count());
   SurfaceJet j = combine_sparse(limit_->basis(s.face, s.uv), points_);
   j.su *= F, j.suu *= F * F, j.suv *= F;
   return j;
@@ -126,7 +126,7 @@ SurfaceJet CatmullClarkPatch::evaluate(Vec2 x) const {
 
 std::vector<BezierCurve> CatmullClarkPatch::boundary_curves() const {
   std::vector<BezierCurve> sides;
-  const std::size_t F = limit_->face_count();
+  const std::size_t F = limit_->ptex_count();
   for (int s = 0; s < 4; ++s) {
     std::vector<Vec3> p;
     const std::size_t n = (s % 2 == 0) ? F : 1;
@@ -138,7 +138,7 @@ std::vector<BezierCurve> CatmullClarkPatch::boundary_curves() const {
 }
 
 Vec3 CatmullClarkPatch::boundary_point(int side, double t) const {
-  const Strip s = strip_of(domain_.side_point(side, t), limit_->face_count());
+  const Strip s = strip_of(domain_.side_point(side, t), limit_->ptex_count());
   return limit_->limit_point(s.face, s.uv, points_);
 }
 
@@ -146,14 +146,14 @@ std::vector<std::shared_ptr<Patch>> CatmullClarkPatch::surface_pieces() const {
   // The pieces share the limit (topology, patch table, stencils); each holds its own copy of
   // the points, as every Patch does, so a drag moves index k in each of them.
   std::vector<std::shared_ptr<Patch>> r;
-  for (std::size_t f = 0; f < limit_->face_count(); ++f)
+  for (std::size_t f = 0; f < limit_->ptex_count(); ++f)
     r.push_back(std::make_shared<CatmullClarkFacePatch>(limit_, static_cast<int>(f), points_));
   return r;
 }
 
 std::vector<std::unique_ptr<CatmullClarkFacePatch>> CatmullClarkPatch::face_patches() const {
   std::vector<std::unique_ptr<CatmullClarkFacePatch>> r;
-  for (std::size_t f = 0; f < limit_->face_count(); ++f)
+  for (std::size_t f = 0; f < limit_->ptex_count(); ++f)
     r.push_back(std::make_unique<CatmullClarkFacePatch>(limit_, static_cast<int>(f), points_));
   return r;
 }

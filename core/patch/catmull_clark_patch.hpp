@@ -1,13 +1,14 @@
 // Catmull-Clark limit surfaces as patches (catmull_clark_limit.hpp does the OpenSubdiv work).
 //
-// CatmullClarkFacePatch: the limit surface over one base quad, domain [0,1]^2 = the face's
-// (u, v). Its control points are all base vertices; only the face's neighbourhood has non-zero
-// weights, so drags are sparse.
+// CatmullClarkFacePatch: the limit surface over one ptex face (a base quad, or one of the n
+// sub-quads of an n-gon), domain [0,1]^2 = the ptex face's (u, v). Its control points are all base
+// vertices; only the face's neighbourhood has non-zero weights, so drags are sparse.
 //
 // CatmullClarkPatch: the whole surface as one scene entry ("catmull-clark"). Scene evaluation
 // draws it as its surface_pieces(): one CatmullClarkFacePatch per base face, each at the full
-// density. As a Patch by itself it is an atlas (face f covers the strip u in [f/F, (f+1)/F] of
-// [0,1]^2) so that tools taking one Patch still work on it.
+// density (one per ptex face: n for an n-gon). As a Patch by itself it is an atlas (ptex face f
+// covers the strip u in [f/F, (f+1)/F] of [0,1]^2) so that tools taking one Patch still work
+// on it.
 #pragma once
 
 #include <memory>
@@ -40,11 +41,11 @@ class CatmullClarkFacePatch final : public Patch {
   // evaluate()), exact for every face.
   Vec3 boundary_point(int side, double t) const override;
 
-  int face() const { return face_; }
+  int face() const { return face_; }  // the ptex face index (= base face for quad meshes)
 
  private:
   std::shared_ptr<const CatmullClarkLimit> limit_;
-  int face_;
+  int face_;                   // ptex face
   std::vector<char> support_;  // vertices that can have non-zero weight on this face
   UnitSquareDomain domain_;
 };
@@ -67,8 +68,8 @@ class CatmullClarkPatch final : public Patch {
   std::vector<BezierCurve> boundary_curves() const override;
   // The limit side through OpenSubdiv's limit stencils on the face the side parameter falls in.
   Vec3 boundary_point(int side, double t) const override;
-  // One CatmullClarkFacePatch per base face (face order), each over its own unit square with
-  // all control vertices: scenes tessellate every face at the full density.
+  // One CatmullClarkFacePatch per ptex face (face order; n per n-gon), each over its own unit
+  // square with all control vertices: scenes tessellate every face at the full density.
   std::vector<std::shared_ptr<Patch>> surface_pieces() const override;
 
   const CatmullClarkLimit& limit() const { return *limit_; }
