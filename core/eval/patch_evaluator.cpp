@@ -126,7 +126,9 @@ std::size_t PatchEvaluator::move_control_point(std::size_t k, const Vec3& p) {
       update_geometry(s);
     }
   }
-  ++revision_;
+  // A point without influence here (an empty sparse column: e.g. a Catmull–Clark vertex far from
+  // this face) changed no sample, so the renderer has nothing to re-upload.
+  if (n > 0) ++revision_;
   return static_cast<std::size_t>(n);
 }
 

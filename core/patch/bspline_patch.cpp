@@ -37,25 +37,7 @@ void BSplinePatch::basis(Vec2 x, std::span<Jet> out) const {
 SurfaceJet BSplinePatch::evaluate(Vec2 x) const {
   // Only the (p+1)(q+1) non-zero functions: O(pq) instead of O(nu nv).
   const auto l = grid_.local(x);
-  // Summed relative to the local point of largest weight (the basis is a partition of unity):
-  // where only coinciding points carry weight, such as on a sphere's pole row, the derivatives
-  // are then exactly zero instead of rounding noise that would pass for a regular point.
-  const int m = (grid_.p() + 1) * (grid_.q() + 1);
-  int best = 0;
-  for (int a = 1; a < m; ++a)
-    if (l.phi[a].f > l.phi[best].f) best = a;
-  const Vec3 ref =
-      points_[(l.i0 + best / (grid_.q() + 1)) * grid_.nv() + l.j0 + best % (grid_.q() + 1)];
-  SurfaceJet s;
-  s.p = ref;
-  for (int a = 0; a <= grid_.p(); ++a)
-    for (int b = 0; b <= grid_.q(); ++b) {
-      const Jet& w = l.phi[a * (grid_.q() + 1) + b];
-      const Vec3 c = points_[(l.i0 + a) * grid_.nv() + l.j0 + b] - ref;
-      s.p += w.f * c, s.su += w.fu * c, s.sv += w.fv * c;
-      s.suu += w.fuu * c, s.suv += w.fuv * c, s.svv += w.fvv * c;
-    }
-  return s;
+  return grid_.combine(l, points_);
 }
 
 void BSplinePatch::influence(std::size_t k, std::span<const Vec2> xs, std::span<Jet> out) const {

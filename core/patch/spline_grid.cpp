@@ -30,4 +30,25 @@ bool SplineGrid::touches(std::size_t k, Vec2 x) const {
   return i >= su - p_ && i <= su && j >= sv - q_ && j <= sv;
 }
 
+SurfaceJet SplineGrid::combine(const Local& l, const std::vector<Vec3>& points) const {
+  // Summed relative to the local point of largest weight (the basis is a partition of unity):
+  // where only coinciding points carry weight, such as on a sphere's pole row, the derivatives
+  // are then exactly zero instead of rounding noise that would pass for a regular point.
+  const int m = (p() + 1) * (q() + 1);
+  int best = 0;
+  for (int a = 1; a < m; ++a)
+    if (l.phi[a].f > l.phi[best].f) best = a;
+  const Vec3 ref = points[(l.i0 + best / (q() + 1)) * nv() + l.j0 + best % (q() + 1)];
+  SurfaceJet s;
+  s.p = ref;
+  for (int a = 0; a <= p(); ++a)
+    for (int b = 0; b <= q(); ++b) {
+      const Jet& w = l.phi[a * (q() + 1) + b];
+      const Vec3 c = points[(l.i0 + a) * nv() + l.j0 + b] - ref;
+      s.p += w.f * c, s.su += w.fu * c, s.sv += w.fv * c;
+      s.suu += w.fuu * c, s.suv += w.fuv * c, s.svv += w.fvv * c;
+    }
+  return s;
+}
+
 }  // namespace pl

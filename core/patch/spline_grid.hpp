@@ -11,6 +11,7 @@
 #include "core/math/bspline_basis.hpp"
 #include "core/math/jet.hpp"
 #include "core/math/vec.hpp"
+#include "core/patch/surface_jet.hpp"
 
 namespace pl {
 
@@ -36,6 +37,8 @@ class SplineGrid {
     std::array<Jet, (kMaxSplineDegree + 1) * (kMaxSplineDegree + 1)> phi;
   };
   Local local(Vec2 x) const;
+  // S and its derivatives from a local basis (polynomial or rational) and the control points.
+  SurfaceJet combine(const Local& l, const std::vector<Vec3>& points) const;
   // Whether control point (i, j) can be non-zero at x (its span contains x's span).
   bool touches(std::size_t k, Vec2 x) const;
 
