@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 #include <stb_image.h>  // implementation compiled into Debian's libstb
 
-#include "cli_test_util.hpp"
+#include "app/cli_test_util.hpp"
 #include "render/egl_context.hpp"
 
 namespace pl::test {
