@@ -88,7 +88,9 @@ TEST(ConcaveDomainFromBoundary, AngleLengthClosesPerturbedData) {
       const double turn_sign = (b - a).x * (c - b).y - (b - a).y * (c - b).x;
       EXPECT_EQ(turn_sign < 0, k == 1) << eps << " " << k;  // the turn at the end of edge 2
     }
-    if (eps < 1e-3) EXPECT_LT(shape_difference(*d, expect), 1e-5);
+    if (eps < 1e-3) {
+      EXPECT_LT(shape_difference(*d, expect), 1e-5);
+    }
   }
   EXPECT_FALSE(angle_length_domain({1, 1, 1}, {-1, -1, -1}).has_value());
 }

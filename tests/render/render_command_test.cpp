@@ -88,7 +88,9 @@ TEST(RenderCommand, WritesAPngOfTheRequestedSize) {
       if (diff > 30) ++drawn;
     }
     EXPECT_GT(drawn, w * h / 10) << extra[1];
-    if (extra[2] == "--transparent") EXPECT_EQ(pixels[3], 0);
+    if (extra[2] == "--transparent") {
+      EXPECT_EQ(pixels[3], 0);
+    }
     stbi_image_free(pixels);
   }
 }
