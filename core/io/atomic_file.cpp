@@ -16,8 +16,12 @@ namespace pl {
 namespace {
 std::filesystem::path temporary_beside(const std::filesystem::path& target) {
   std::random_device rd;
-  return target.parent_path() /
-         ("." + target.filename().string() + ".tmp" + std::to_string(rd() % 1000000));
+  // Built by appends: GCC 12 reports a false -Wrestrict for "literal" + std::string at -O3.
+  std::string name = ".";
+  name += target.filename().string();
+  name += ".tmp";
+  name += std::to_string(rd() % 1000000);
+  return target.parent_path() / name;
 }
 
 void fsync_path(const std::filesystem::path& p) {
