@@ -37,11 +37,13 @@ DisplaySettings parse_display_mode(const std::string& mode) {
       s.network_curves = true;
     else if (token == "borders")
       s.borders = true;
+    else if (token == "combs")
+      s.combs = true;
     else
       throw std::invalid_argument(
           "unknown mode \"" + token +
           "\" (expected shaded, isophotes, zebra, mean, gaussian, kmax, kmin, control-net, "
-          "network or borders, combined with '+')");
+          "network, borders or combs, combined with '+')");
     if (plus == std::string::npos) break;
     start = plus + 1;
   }

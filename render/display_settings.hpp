@@ -21,6 +21,14 @@ struct DisplaySettings {
   bool control_net = false;
   bool network_curves = false;
   bool borders = false;  // patch boundaries
+  bool combs = false;    // curvature combs on the network curves and/or borders shown
+
+  // Curvature combs: tooth length per unit curvature is comb_length (model units), or the
+  // scene's automatic one (see automatic_comb_scale) when nullopt, times comb_scale. comb_teeth
+  // is the number of tooth intervals per curve, used by whoever builds the DrawScene.
+  double comb_scale = 1.0;
+  std::optional<double> comb_length;
+  int comb_teeth = 32;
 
   // Isophotes: lines where the angle between the normal and a light direction fixed in the model
   // is a multiple of 180 deg / count.
@@ -42,9 +50,9 @@ struct DisplaySettings {
 };
 
 // Parses "shaded", "isophotes", "zebra", "mean", "gaussian", "kmax", "kmin", "control-net",
-// "network", "borders", combined with '+'. At most one of shaded/zebra/curvature is the base;
-// "isophotes" is the base when alone and an overlay otherwise. Throws std::invalid_argument with
-// a message naming the offending token.
+// "network", "borders", "combs", combined with '+'. At most one of shaded/zebra/curvature is the
+// base; "isophotes" is the base when alone and an overlay otherwise. Throws std::invalid_argument
+// with a message naming the offending token.
 DisplaySettings parse_display_mode(const std::string& mode);
 
 }  // namespace pl

@@ -1,13 +1,14 @@
 // Everything the renderer draws, as plain arrays (architecture: "the renderer eats plain
 // arrays"): tessellated surfaces with exact normals and curvatures, the control net with the kind
-// of every point, and polylines for network curves and patch borders. The app builds it from a
-// scene; the renderer never sees patch classes.
+// of every point, polylines for network curves and patch borders, and their curvature combs. The
+// app builds it from a scene; the renderer never sees patch classes.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <vector>
 
+#include "core/curve/curvature_comb.hpp"
 #include "core/mesh/surface_mesh.hpp"
 #include "core/patch/patch.hpp"  // ControlPointKind only
 #include "render/camera.hpp"
@@ -27,6 +28,10 @@ struct DrawScene {
   ControlNet net;
   std::vector<Polyline> network_curves;
   std::vector<Polyline> borders;
+  // Curvature combs (plain arrays: sample points and teeth) of the network curves and of the
+  // borders, drawn on the curves that are shown when the `combs` overlay is on.
+  std::vector<CurvatureComb> network_combs;
+  std::vector<CurvatureComb> border_combs;
 
   // Of the surfaces, net and curves: what a camera frames.
   Box bounds() const;

@@ -44,6 +44,19 @@ double panel_aspect(int width, int height, int count, const DisplaySettings& set
   return static_cast<double>(v.width) / v.height;
 }
 
+DisplaySettings common_comb_length(const DisplaySettings& settings,
+                                   const std::vector<const GpuScene*>& scenes) {
+  DisplaySettings s = settings;
+  if (!s.combs || s.comb_length || scenes.size() < 2) return s;
+  // The smallest: the panel with the strongest reference curvature keeps its teeth in bounds.
+  double length = 0;
+  for (const GpuScene* g : scenes)
+    if (g->comb_scale() > 0)
+      length = length > 0 ? std::min(length, g->comb_scale()) : g->comb_scale();
+  if (length > 0) s.comb_length = length;
+  return s;
+}
+
 Image render_frame(const SceneRenderer& renderer, const FrameRequest& r) {
   if (r.width < 1 || r.height < 1 || r.panels.empty())
     throw std::invalid_argument("render_frame: empty image or no panels");
@@ -55,6 +68,9 @@ Image render_frame(const SceneRenderer& renderer, const FrameRequest& r) {
   const double pixel_scale = std::max(0.75, r.height / kReferenceHeight);
   const std::vector<Viewport> panels =
       panel_viewports(r.width, r.height, static_cast<int>(r.panels.size()), r.settings, r.range);
+  std::vector<const GpuScene*> scenes;
+  for (const FramePanel& p : r.panels) scenes.push_back(p.scene);
+  const DisplaySettings settings = common_comb_length(r.settings, scenes);
 
   // Tiles in GL's bottom-left pixel coordinates of the whole image; each panel keeps its full
   // viewport, shifted by the tile origin, so tiles join seamlessly and line widths stay in
@@ -75,7 +91,7 @@ Image render_frame(const SceneRenderer& renderer, const FrameRequest& r) {
         v.x -= tx;
         v.y -= ty;
         v.pixel_scale = pixel_scale;
-        renderer.draw(*r.panels[i].scene, r.camera, r.settings, r.range, v);
+        renderer.draw(*r.panels[i].scene, r.camera, settings, r.range, v);
         glDisable(GL_SCISSOR_TEST);
       }
       // GL row ty is image row height - ty - th .. counted from the top.

@@ -32,6 +32,12 @@ std::vector<Viewport> panel_viewports(int width, int height, int count,
 double panel_aspect(int width, int height, int count, const DisplaySettings& settings,
                     const ColorRange& range);
 
+// `settings` with comb_length fixed for every panel (the smallest automatic one among them), so
+// that equal teeth side by side mean equal curvature, as one colour range does for the maps.
+// Unchanged without combs, with comb_length already set, or for one panel.
+DisplaySettings common_comb_length(const DisplaySettings& settings,
+                                   const std::vector<const GpuScene*>& scenes);
+
 Image render_frame(const SceneRenderer& renderer, const FrameRequest& request);
 
 }  // namespace pl

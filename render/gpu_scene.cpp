@@ -1,11 +1,13 @@
 #include "render/gpu_scene.hpp"
 
+#include <algorithm>
+
 namespace pl {
 
 namespace {
 
 // Attribute locations shared with the shaders (layout(location = N) there).
-constexpr GLuint kPosition = 0, kNormal = 1, kCurvature = 2, kTag = 1;
+constexpr GLuint kPosition = 0, kNormal = 1, kCurvature = 2, kTag = 1, kOffset = 2;
 
 void attribute(GLuint location, const gl::Buffer& buffer, GLint components) {
   glBindBuffer(GL_ARRAY_BUFFER, buffer.id());
@@ -74,21 +76,53 @@ GpuPrimitives::GpuPrimitives() {
   vao_.bind();
   positions_.data(GL_ARRAY_BUFFER, nullptr, 0, GL_DYNAMIC_DRAW);
   tags_.data(GL_ARRAY_BUFFER, nullptr, 0, GL_DYNAMIC_DRAW);
+  offsets_.data(GL_ARRAY_BUFFER, nullptr, 0, GL_DYNAMIC_DRAW);
   attribute(kPosition, positions_, 3);
   attribute(kTag, tags_, 1);
+  attribute(kOffset, offsets_, 3);
   glBindVertexArray(0);
 }
 
-void GpuPrimitives::set(const std::vector<Vec3>& vertices, const std::vector<float>& tags) {
-  std::vector<float> xyz;
-  xyz.reserve(vertices.size() * 3);
-  for (const Vec3& p : vertices)
-    for (int k = 0; k < 3; ++k) xyz.push_back(static_cast<float>(p[k]));
+void GpuPrimitives::set(const std::vector<Vec3>& vertices, const std::vector<float>& tags,
+                        const std::vector<Vec3>& offsets) {
+  auto floats = [n = vertices.size()](const std::vector<Vec3>& v) {
+    std::vector<float> xyz(n * 3, 0.0f);
+    for (std::size_t i = 0; i < std::min(n, v.size()); ++i)
+      for (int k = 0; k < 3; ++k) xyz[3 * i + k] = static_cast<float>(v[i][k]);
+    return xyz;
+  };
+  const std::vector<float> xyz = floats(vertices), offset_xyz = floats(offsets);
   std::vector<float> t = tags;
   t.resize(vertices.size(), 0.0f);
   positions_.data(GL_ARRAY_BUFFER, xyz.data(), xyz.size() * sizeof(float), GL_DYNAMIC_DRAW);
   tags_.data(GL_ARRAY_BUFFER, t.data(), t.size() * sizeof(float), GL_DYNAMIC_DRAW);
+  offsets_.data(GL_ARRAY_BUFFER, offset_xyz.data(), offset_xyz.size() * sizeof(float),
+                GL_DYNAMIC_DRAW);
   count_ = static_cast<GLsizei>(vertices.size());
+}
+
+void GpuCombs::set(const std::vector<CurvatureComb>& combs) {
+  std::vector<Vec3> points, offsets, tip_points, tip_offsets;
+  for (const CurvatureComb& c : combs) {
+    const std::size_t n = c.points.size();
+    const Vec3 zero(0);
+    for (std::size_t i = 0; i < n; ++i) {
+      // Teeth at every tooth_stride-th sample and always at the last one (the curve's end). A
+      // zero tooth, and the envelope where both ends have one, would be drawn as a dot (the
+      // line shader widens a zero-length segment into a square): where the curve is straight
+      // or degenerate the envelope is the curve itself and nothing is drawn over it.
+      if ((i % std::size_t(std::max(c.tooth_stride, 1)) == 0 || i + 1 == n) && c.teeth[i] != zero) {
+        points.insert(points.end(), {c.points[i], c.points[i]});
+        offsets.insert(offsets.end(), {Vec3(0), c.teeth[i]});
+      }
+      if (i + 1 < n && (c.teeth[i] != zero || c.teeth[i + 1] != zero)) {
+        tip_points.insert(tip_points.end(), {c.points[i], c.points[i + 1]});
+        tip_offsets.insert(tip_offsets.end(), {c.teeth[i], c.teeth[i + 1]});
+      }
+    }
+  }
+  teeth.set(points, {}, offsets);
+  envelope.set(tip_points, {}, tip_offsets);
 }
 
 void GpuPrimitives::draw(GLenum mode) const {
@@ -127,6 +161,14 @@ void GpuScene::update(const DrawScene& scene) {
   };
   curves_.set(polylines(scene.network_curves), {});
   borders_.set(polylines(scene.borders), {});
+  network_combs_.set(scene.network_combs);
+  border_combs_.set(scene.border_combs);
+  std::vector<CurvatureComb> all = scene.network_combs;
+  all.insert(all.end(), scene.border_combs.begin(), scene.border_combs.end());
+  const Box box = scene.bounds();
+  const double diagonal = box.empty() ? 0.0 : glm::length(box.hi - box.lo);
+  comb_scale_ = automatic_comb_scale(all, diagonal);
+  comb_reference_length_ = kDefaultCombFraction * diagonal;
 }
 
 }  // namespace pl

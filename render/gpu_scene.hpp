@@ -29,18 +29,28 @@ class GpuSurface {
   std::vector<float> scratch_;  // reused conversion buffer: no allocation per drag update
 };
 
-// Line segments (GL_LINES pairs) or points with a per-vertex float tag (the point kind).
+// Line segments (GL_LINES pairs) or points with a per-vertex float tag (the point kind) and a
+// per-vertex offset (comb teeth: the shader draws the vertex at position + scale * offset, so a
+// new comb scale needs no upload). Missing tags and offsets are zero.
 class GpuPrimitives {
  public:
   GpuPrimitives();
-  void set(const std::vector<Vec3>& vertices, const std::vector<float>& tags);
+  void set(const std::vector<Vec3>& vertices, const std::vector<float>& tags,
+           const std::vector<Vec3>& offsets = {});
   void draw(GLenum mode) const;
   bool empty() const { return count_ == 0; }
 
  private:
   gl::VertexArray vao_;
-  gl::Buffer positions_, tags_;
+  gl::Buffer positions_, tags_, offsets_;
   GLsizei count_ = 0;
+};
+
+// A set of curvature combs as two line lists: the teeth (curve point to tip) and the envelope
+// through the tips, both with their offsets for the shader.
+struct GpuCombs {
+  GpuPrimitives teeth, envelope;
+  void set(const std::vector<CurvatureComb>& combs);
 };
 
 class GpuScene {
@@ -58,10 +68,19 @@ class GpuScene {
   const GpuPrimitives& net_points() const { return net_points_; }
   const GpuPrimitives& network_curves() const { return curves_; }
   const GpuPrimitives& borders() const { return borders_; }
+  const GpuCombs& network_combs() const { return network_combs_; }
+  const GpuCombs& border_combs() const { return border_combs_; }
+  // The automatic comb scale of this scene (tooth length per unit curvature, over the combs of
+  // network curves and borders together so that coincident curves get equal teeth; 0 if every
+  // curve is straight) and the tooth length it gives the reference curvature.
+  double comb_scale() const { return comb_scale_; }
+  double comb_reference_length() const { return comb_reference_length_; }
 
  private:
   std::vector<GpuSurface> surfaces_;
   GpuPrimitives net_lines_, net_points_, curves_, borders_;
+  GpuCombs network_combs_, border_combs_;
+  double comb_scale_ = 0, comb_reference_length_ = 0;
 };
 
 }  // namespace pl

@@ -13,6 +13,11 @@ constexpr float kOverlayDepthBias = 4e-4f;
 // How visible hidden parts of the control net are: enough to read the structure behind the
 // surface, faint enough not to be confused with the visible part.
 constexpr float kHiddenAlpha = 0.22f;
+// Teeth longer than this many reference lengths (the automatic length at the reference
+// curvature, times the user's multiplier) are cut to it: near a cusp the curvature grows
+// without bound, and one tooth across the whole picture hides everything else. The envelope is
+// capped the same way, so a flat top on it marks a capped stretch.
+constexpr double kCombCap = 3.0;
 
 void set(GLint loc, const Vec3& v) {
   glUniform3f(loc, static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z));
@@ -78,10 +83,22 @@ void SceneRenderer::draw(const GpuScene& scene, const Camera& camera,
   glEnable(GL_BLEND);
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   const float s = static_cast<float>(v.pixel_scale);
-  if (settings.borders)
-    draw_lines(scene.borders(), vp, v, {0.12f, 0.13f, 0.16f, 0.85f}, 1.4f * s, false);
-  if (settings.network_curves)
+  // Combs go on the curves shown; `combs` alone shows the network curves with theirs, or the
+  // borders of a scene without a network.
+  const bool lone_combs = settings.combs && !settings.borders && !settings.network_curves;
+  const bool has_network = !scene.network_curves().empty();
+  const bool borders = settings.borders || (lone_combs && !has_network);
+  const bool network = settings.network_curves || (lone_combs && has_network);
+  if (borders) draw_lines(scene.borders(), vp, v, {0.12f, 0.13f, 0.16f, 0.85f}, 1.4f * s, false);
+  if (network)
     draw_lines(scene.network_curves(), vp, v, {0.05f, 0.30f, 0.62f, 1.0f}, 2.6f * s, false);
+  if (settings.combs) {
+    const double per_curvature =
+        settings.comb_length.value_or(scene.comb_scale()) * settings.comb_scale;
+    const double cap = kCombCap * scene.comb_reference_length() * settings.comb_scale;
+    if (borders) draw_combs(scene.border_combs(), vp, v, float(per_curvature), float(cap));
+    if (network) draw_combs(scene.network_combs(), vp, v, float(per_curvature), float(cap));
+  }
   if (settings.control_net) {
     draw_lines(scene.net_lines(), vp, v, {0.20f, 0.22f, 0.26f, 0.9f}, 1.3f * s, true);
     points_.use();
@@ -119,11 +136,28 @@ void SceneRenderer::draw_backdrop(const Viewport& v) const {
   glBindVertexArray(0);
 }
 
+void SceneRenderer::draw_combs(const GpuCombs& combs, const glm::mat4& vp, const Viewport& v,
+                               float offset_scale, float offset_max) const {
+  if (!(offset_scale > 0)) return;  // every curve straight: no tooth has length
+  const float s = static_cast<float>(v.pixel_scale);
+  // A colour of their own (none of the curves', the point kinds' or the colour map's), teeth
+  // thin and light so dense combs do not turn into a solid band, the envelope stronger: it is
+  // what the eye follows. Parts behind a surface show faintly, as the control net does, since
+  // teeth often pierce the surface they describe.
+  draw_lines(combs.teeth, vp, v, {0.00f, 0.55f, 0.50f, 0.55f}, 1.0f * s, true, offset_scale,
+             offset_max);
+  draw_lines(combs.envelope, vp, v, {0.00f, 0.45f, 0.40f, 0.95f}, 1.8f * s, true, offset_scale,
+             offset_max);
+}
+
 void SceneRenderer::draw_lines(const GpuPrimitives& lines, const glm::mat4& vp, const Viewport& v,
-                               const float (&color)[4], float width, bool show_hidden) const {
+                               const float (&color)[4], float width, bool show_hidden,
+                               float offset_scale, float offset_max) const {
   if (lines.empty()) return;
   lines_.use();
   glUniformMatrix4fv(lines_.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
+  glUniform1f(lines_.uniform("u_offset_scale"), offset_scale);
+  glUniform1f(lines_.uniform("u_offset_max"), offset_max);
   glUniform2f(lines_.uniform("u_viewport_size"), float(v.width), float(v.height));
   glUniform1f(lines_.uniform("u_width"), width);
   glUniform1f(lines_.uniform("u_depth_bias"), kOverlayDepthBias);

@@ -29,8 +29,12 @@ class SceneRenderer {
   void draw_backdrop(const Viewport& viewport) const;
 
  private:
+  // offset_scale and offset_max place comb vertices (see line.vert.glsl); 0 for plain lines.
   void draw_lines(const GpuPrimitives& lines, const glm::mat4& vp, const Viewport& v,
-                  const float (&color)[4], float width, bool show_hidden) const;
+                  const float (&color)[4], float width, bool show_hidden, float offset_scale = 0.0f,
+                  float offset_max = 0.0f) const;
+  void draw_combs(const GpuCombs& combs, const glm::mat4& vp, const Viewport& v, float offset_scale,
+                  float offset_max) const;
   gl::Program surface_, lines_, points_, backdrop_;
   gl::VertexArray empty_vao_;  // the backdrop has no attributes, but core profiles need a VAO
   gl::Texture color_map_;

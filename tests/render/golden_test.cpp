@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/curve/curvature_comb.hpp"
 #include "render/frame.hpp"
 #include "render/gpu_scene.hpp"
 #include "render_test_util.hpp"
@@ -44,6 +45,7 @@ DrawScene saddle_scene() {
     Polyline l;
     for (int i = 0; i <= 32; ++i) l.push_back(c.point(i / 32.0));
     d.borders.push_back(l);
+    d.border_combs.push_back(curvature_comb(c, 12));
   }
   return d;
 }
@@ -119,7 +121,8 @@ INSTANTIATE_TEST_SUITE_P(
                       GoldenCase{"saddle-zebra", "zebra", ViewPreset::Front, 1},
                       GoldenCase{"saddle-mean-net", "mean+control-net", ViewPreset::Iso, 1},
                       GoldenCase{"saddle-gaussian-iso", "gaussian+isophotes", ViewPreset::Top, 1},
-                      GoldenCase{"saddle-compare-kmax", "kmax", ViewPreset::Iso, 2}),
+                      GoldenCase{"saddle-compare-kmax", "kmax", ViewPreset::Iso, 2},
+                      GoldenCase{"saddle-combs", "shaded+borders+combs", ViewPreset::Iso, 1}),
     [](const auto& info) {
       std::string n = info.param.name;
       std::replace(n.begin(), n.end(), '-', '_');
