@@ -1,6 +1,7 @@
 #include "app/cli/draw_scene_builder.hpp"
 
 #include "core/patch/bezier_patch.hpp"
+#include "core/patch/side_curve.hpp"
 
 namespace pl {
 
@@ -36,12 +37,16 @@ void add_bezier_net(ControlNet& net, const BezierPatch& b) {
 
 }  // namespace
 
-DrawScene build_draw_scene(const Scene& scene, const SceneSurfaces& surfaces) {
+DrawScene build_draw_scene(const Scene& scene, const SceneSurfaces& surfaces, int comb_teeth) {
   DrawScene d;
   for (const SceneSurface& s : surfaces.surfaces) {
     d.surfaces.push_back(make_surface_mesh(*s.evaluator, s.name));
-    for (const BezierCurve& c : s.evaluator->patch().boundary_curves())
-      d.borders.push_back(sample(c));
+    // Borders from the surface itself (boundary_curves() only approximates some types' sides),
+    // with their combs from the surface jet along each side.
+    for (CurvatureComb& c : side_combs(s.evaluator->patch(), comb_teeth)) {
+      d.borders.push_back(c.points);
+      d.border_combs.push_back(std::move(c));
+    }
   }
   if (scene.network) {
     const Network& net = *scene.network;
@@ -56,7 +61,9 @@ DrawScene build_draw_scene(const Scene& scene, const SceneSurfaces& surfaces) {
       d.net.segments.push_back({vertex_ids.at(edge.v[0]), h1});
       d.net.segments.push_back({h1, h2});
       d.net.segments.push_back({h2, vertex_ids.at(edge.v[1])});
-      d.network_curves.push_back(sample(net.edge_curve(static_cast<int>(e))));
+      const BezierCurve curve = net.edge_curve(static_cast<int>(e));
+      d.network_curves.push_back(sample(curve));
+      d.network_combs.push_back(curvature_comb(curve, comb_teeth));
     }
   }
   for (const SceneSurface& s : surfaces.surfaces) {

@@ -72,13 +72,14 @@ void Editor::rebuild_views() {
   compare_views_[1].reset();
   view_error_.clear();
   try {
+    const int teeth = prefs_.display.comb_teeth;
     main_view_ = std::make_unique<EvaluatedView>(doc_, std::nullopt, prefs_.coarse_density,
-                                                 prefs_.fine_density);
+                                                 prefs_.fine_density, teeth);
     if (compare_ && doc_.scene().network) {
       compare_views_[0] = std::make_unique<EvaluatedView>(
-          doc_, FaceScheme::Gregory, prefs_.coarse_density, prefs_.fine_density);
+          doc_, FaceScheme::Gregory, prefs_.coarse_density, prefs_.fine_density, teeth);
       compare_views_[1] = std::make_unique<EvaluatedView>(
-          doc_, FaceScheme::GB, prefs_.coarse_density, prefs_.fine_density);
+          doc_, FaceScheme::GB, prefs_.coarse_density, prefs_.fine_density, teeth);
     }
   } catch (const DataError& e) {
     view_error_ = e.what();

@@ -157,6 +157,25 @@ void Editor::draw_display_section() {
   ImGui::Checkbox("Patch borders", &d.borders);
   ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.5f);
   ImGui::Checkbox("Probe", &prefs_.show_probe);
+  ImGui::Checkbox("Curvature combs", &d.combs);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Teeth of length proportional to the curvature, away from the centre of\n"
+        "curvature, on the curves and borders shown (on the curves if neither is)");
+  if (d.combs) {
+    float scale = float(d.comb_scale);
+    if (ImGui::SliderFloat("Comb scale", &scale, float(kMinCombScale), float(kMaxCombScale),
+                           "%.2f x", ImGuiSliderFlags_Logarithmic))
+      d.comb_scale = scale;
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip(
+          "Multiplies the automatic tooth length (the 90th-percentile curvature\n"
+          "gets 6 %% of the scene diagonal; teeth are capped at 3 times that)");
+    ImGui::SliderInt("Comb teeth", &d.comb_teeth, kMinCombTeeth, kMaxCombTeeth);
+    // Teeth are sampled when the views are built, like the density: rebuild on release.
+    if (ImGui::IsItemDeactivatedAfterEdit()) rebuild_views();
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Teeth per curve");
+  }
   int densities[2] = {prefs_.coarse_density, prefs_.fine_density};
   if (ImGui::SliderInt2("Density", densities, 4, 96)) {
     prefs_.coarse_density = densities[0];
@@ -331,6 +350,7 @@ void Editor::draw_help_window() {
       {"Ctrl+Z, Ctrl+Shift+Z, Ctrl+Y", "undo, redo"},
       {"Ctrl+O, Ctrl+S, Ctrl+Shift+S", "open, save, save as"},
       {"Drop a file on the window", "open it (.json, .gbp)"},
+      {"Display > Curvature combs", "teeth ~ curvature on curves / borders (scale, teeth)"},
   };
   if (ImGui::BeginTable("help", 2, ImGuiTableFlags_RowBg)) {
     for (const auto& r : rows) {

@@ -11,6 +11,7 @@
 #include "app/editor/editor.hpp"
 #include "app/editor/logic/surface_difference.hpp"
 #include "app/editor/theme.hpp"
+#include "render/frame.hpp"
 #include "render/gl.hpp"
 #include "render/legend.hpp"
 
@@ -109,6 +110,10 @@ void Editor::draw_viewport() {
   const auto rects = panel_rects();
   const ColorRange range = current_range();
   if (compare_ && difference_) refresh_difference();
+  // One comb scale for side-by-side panels, as one colour range.
+  std::vector<const GpuScene*> scenes;
+  for (std::size_t i = 0; i < rects.size(); ++i) scenes.push_back(&panel_view(int(i)).gpu());
+  const DisplaySettings display = common_comb_length(prefs_.display, scenes);
   for (std::size_t i = 0; i < rects.size(); ++i) {
     const ViewRect& r = rects[i];
     Viewport v;
@@ -122,14 +127,14 @@ void Editor::draw_viewport() {
     glClear(GL_DEPTH_BUFFER_BIT);
     renderer_.draw_backdrop(v);
     if (compare_ && difference_ && i == 1 && difference_gpu_) {
-      DisplaySettings d = prefs_.display;
+      DisplaySettings d = display;
       d.base = BaseMode::Curvature;
       d.curvature = CurvatureKind::Mean;  // the field that holds the distance
       d.curvature_lighting = true;
       const double m = difference_max_ > 0 ? difference_max_ : 1e-12;
       renderer_.draw(*difference_gpu_, camera_, d, {-m, m}, v);
     } else {
-      renderer_.draw(panel_view(int(i)).gpu(), camera_, prefs_.display, range, v);
+      renderer_.draw(panel_view(int(i)).gpu(), camera_, display, range, v);
     }
     glDisable(GL_SCISSOR_TEST);
   }

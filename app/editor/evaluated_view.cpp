@@ -9,10 +9,10 @@ std::string source_of(const Document& doc) {
 }  // namespace
 
 EvaluatedView::EvaluatedView(const Document& doc, std::optional<FaceScheme> scheme,
-                             int coarse_density, int fine_density)
+                             int coarse_density, int fine_density, int comb_teeth)
     : scheme_(scheme),
-      fine_(doc.scene(), fine_density, scheme, source_of(doc)),
-      coarse_(doc.scene(), coarse_density, scheme, source_of(doc)),
+      fine_(doc.scene(), fine_density, scheme, source_of(doc), comb_teeth),
+      coarse_(doc.scene(), coarse_density, scheme, source_of(doc), comb_teeth),
       gpu_fine_(fine_.draw()),
       gpu_coarse_(coarse_.draw()),
       fine_revision_(doc.revision()),

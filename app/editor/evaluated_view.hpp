@@ -17,7 +17,7 @@ class EvaluatedView {
  public:
   // Throws DataError when the scene cannot be evaluated.
   EvaluatedView(const Document& doc, std::optional<FaceScheme> scheme, int coarse_density,
-                int fine_density);
+                int fine_density, int comb_teeth = DisplaySettings().comb_teeth);
 
   // Follows the document; returns true when what is drawn changed. Throws DataError when the
   // edited network cannot be filled (the view keeps its last state).

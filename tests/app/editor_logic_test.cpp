@@ -168,6 +168,18 @@ TEST(EditorLiveSurfaces, IncrementalSyncMatchesAFreshEvaluation) {
   }
   EXPECT_EQ(live.points().find(PointRef::vertex(0)), 0);
   EXPECT_EQ(live.points().positions[0], Vec3(-0.1, -0.05, 0.2));
+  // Border combs are recomputed for the changed surfaces only; all must match a fresh build.
+  const DrawScene &a = live.draw(), &b = fresh.draw();
+  ASSERT_EQ(a.border_combs.size(), b.border_combs.size());
+  ASSERT_EQ(a.borders.size(), a.border_combs.size());
+  ASSERT_EQ(a.network_combs.size(), a.network_curves.size());
+  for (std::size_t c = 0; c < a.border_combs.size(); ++c) {
+    ASSERT_EQ(a.border_combs[c].points.size(), b.border_combs[c].points.size());
+    for (std::size_t i = 0; i < a.border_combs[c].points.size(); ++i) {
+      EXPECT_LT(glm::length(a.border_combs[c].points[i] - b.border_combs[c].points[i]), 1e-12);
+      EXPECT_LT(glm::length(a.border_combs[c].teeth[i] - b.border_combs[c].teeth[i]), 1e-9);
+    }
+  }
 }
 
 }  // namespace

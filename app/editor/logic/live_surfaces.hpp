@@ -10,14 +10,16 @@
 
 #include "app/editor/logic/scene_points.hpp"
 #include "core/eval/scene_evaluation.hpp"
+#include "render/display_settings.hpp"
 
 namespace pl {
 
 class LiveSurfaces {
  public:
   // Throws DataError like evaluate_scene.
+  // comb_teeth: tooth intervals per curve of the curvature combs in draw().
   LiveSurfaces(const Scene& scene, int density, std::optional<FaceScheme> scheme,
-               const std::string& source);
+               const std::string& source, int comb_teeth = DisplaySettings().comb_teeth);
 
   // Brings the evaluation up to `scene` (revision `revision` of the document). Returns the
   // indices of surfaces whose meshes changed. Throws DataError when the edited network cannot be
@@ -36,6 +38,10 @@ class LiveSurfaces {
   SceneEvaluation evaluation_;
   DrawScene draw_;
   ScenePoints points_;
+  int comb_teeth_;
+  // Per surface: its border combs, recomputed only for surfaces a sync changed (each is a few
+  // hundred patch evaluations, as much as a coarse drag re-evaluation of a small patch).
+  std::vector<std::vector<CurvatureComb>> border_combs_;
   uint64_t revision_ = 0;
   double last_sync_ms_ = 0;
 };

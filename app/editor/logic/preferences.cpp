@@ -67,6 +67,9 @@ std::string preferences_to_text(const Preferences& p) {
     << "control_net = " << d.control_net << "\n"
     << "network_curves = " << d.network_curves << "\n"
     << "borders = " << d.borders << "\n"
+    << "combs = " << d.combs << "\n"
+    << "comb_scale = " << d.comb_scale << "\n"
+    << "comb_teeth = " << d.comb_teeth << "\n"
     << "isophote_count = " << d.isophote_count << "\n"
     << "zebra_count = " << d.zebra_count << "\n"
     << "zebra_width = " << d.zebra_width << "\n"
@@ -114,6 +117,13 @@ Preferences preferences_from_text(const std::string& text) {
       flag(d.network_curves);
     } else if (key == "borders") {
       flag(d.borders);
+    } else if (key == "combs") {
+      flag(d.combs);
+    } else if (key == "comb_scale" && parse_double(value, x) && x >= kMinCombScale &&
+               x <= kMaxCombScale) {
+      d.comb_scale = x;
+    } else if (key == "comb_teeth" && parse_int(value, i, kMinCombTeeth, kMaxCombTeeth)) {
+      d.comb_teeth = i;
     } else if (key == "isophote_count" && parse_int(value, i, 1, 200)) {
       d.isophote_count = i;
     } else if (key == "zebra_count" && parse_int(value, i, 1, 200)) {

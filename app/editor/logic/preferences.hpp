@@ -21,6 +21,10 @@ struct Preferences {
   std::string last_directory;
 };
 
+// The ranges of the comb controls (Display panel sliders, accepted preference values).
+inline constexpr double kMinCombScale = 0.05, kMaxCombScale = 20.0;
+inline constexpr int kMinCombTeeth = 2, kMaxCombTeeth = 200;
+
 Preferences default_preferences();  // isophotes on, control net and curves shown
 std::string preferences_to_text(const Preferences& p);
 Preferences preferences_from_text(const std::string& text);

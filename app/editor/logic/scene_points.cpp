@@ -1,6 +1,7 @@
 #include "app/editor/logic/scene_points.hpp"
 
 #include "core/patch/bezier_patch.hpp"
+#include "core/patch/side_curve.hpp"
 
 namespace pl {
 
@@ -88,19 +89,34 @@ ScenePoints collect_scene_points(const Scene& scene, const SceneSurfaces& surfac
   return s;
 }
 
-void fill_overlays(const Scene& scene, const SceneSurfaces& surfaces, const ScenePoints& points,
-                   DrawScene& draw) {
+void fill_overlays(const Scene& scene, const ScenePoints& points, int comb_teeth, DrawScene& draw) {
   draw.net.points = points.positions;
   draw.net.kinds = points.kinds;
   draw.net.segments = points.segments;
   draw.network_curves.clear();
+  draw.network_combs.clear();
   if (scene.network)
-    for (std::size_t e = 0; e < scene.network->edges.size(); ++e)
-      draw.network_curves.push_back(sample(scene.network->edge_curve(static_cast<int>(e))));
+    for (std::size_t e = 0; e < scene.network->edges.size(); ++e) {
+      const BezierCurve curve = scene.network->edge_curve(static_cast<int>(e));
+      draw.network_curves.push_back(sample(curve));
+      draw.network_combs.push_back(curvature_comb(curve, comb_teeth));
+    }
+}
+
+std::vector<CurvatureComb> border_combs(const SceneSurface& surface, int comb_teeth) {
+  // From the surface jet along each side: exact for every patch type, and the border drawn is
+  // the surface's own edge (boundary_curves() only approximates some types' sides).
+  return side_combs(surface.evaluator->patch(), comb_teeth);
+}
+
+void fill_borders(const std::vector<std::vector<CurvatureComb>>& combs, DrawScene& draw) {
   draw.borders.clear();
-  for (const SceneSurface& s : surfaces.surfaces)
-    for (const BezierCurve& c : s.evaluator->patch().boundary_curves())
-      draw.borders.push_back(sample(c));
+  draw.border_combs.clear();
+  for (const auto& surface : combs)
+    for (const CurvatureComb& c : surface) {
+      draw.borders.push_back(c.points);
+      draw.border_combs.push_back(c);
+    }
 }
 
 }  // namespace pl
