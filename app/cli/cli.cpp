@@ -19,6 +19,7 @@ std::span<const Command> commands() {
               "FILE -o OUT.png [--size WxH] [--mode MODE] [--view VIEW] [--compare] "
               "[--transparent] [--density N]",
               run_render},
+      Command{"gbnet", "IN.gbp -o OUT.gbp [--defaults boundary|ring1] [--elevate K]", run_gbnet},
   };
   return table;
 }

@@ -20,5 +20,6 @@ int run_export(std::span<const std::string> args, std::ostream& out, std::ostrea
 int run_analyze(std::span<const std::string> args, std::ostream& out, std::ostream& err);
 int run_convert(std::span<const std::string> args, std::ostream& out, std::ostream& err);
 int run_render(std::span<const std::string> args, std::ostream& out, std::ostream& err);
+int run_gbnet(std::span<const std::string> args, std::ostream& out, std::ostream& err);
 
 }  // namespace pl
