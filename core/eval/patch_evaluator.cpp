@@ -14,6 +14,10 @@ constexpr double kSingularNudge = 1e-6;
 // saves (and spinning idle threads steal the core from the renderer and other processes).
 constexpr std::ptrdiff_t kParallelMin = 8192;
 
+// Samples per evaluate_many call of evaluate_all: enough to amortise the call, few enough that the
+// jets are still in cache when their geometry is computed.
+constexpr std::ptrdiff_t kChunk = 512;
+
 inline void axpy(SurfaceJet& s, const Vec3& d, const Jet& w) {
   s.p += w.f * d;
   s.su += w.fu * d;
@@ -47,10 +51,12 @@ void PatchEvaluator::update_geometry(std::size_t i) {
 void PatchEvaluator::evaluate_all() {
   const auto& xs = tessellation_->points;
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(xs.size());
+  // Chunks through evaluate_many, so patch types with a batched (SIMD) form use it.
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
-  for (std::ptrdiff_t i = 0; i < n; ++i) {
-    jets_[i] = patch_->evaluate(xs[i]);
-    update_geometry(i);
+  for (std::ptrdiff_t b = 0; b < n; b += kChunk) {
+    const std::ptrdiff_t e = std::min(n, b + kChunk);
+    patch_->evaluate_many(std::span(xs).subspan(b, e - b), std::span(jets_).subspan(b, e - b));
+    for (std::ptrdiff_t i = b; i < e; ++i) update_geometry(i);
   }
   columns_.clear();  // columns depend only on the basis, but a full rebuild starts clean
   ++revision_;

@@ -49,7 +49,10 @@ constexpr Jet operator*(double s, Jet a) {
   return a *= s;
 }
 
-constexpr Jet operator*(const Jet& a, const Jet& b) {
+// The product and chain rules as templates over the jet type: Jet here, and JetLanes
+// (core/math/lanes.hpp) runs the very same operations on SIMD lanes, one sample per lane.
+template <class J>
+[[gnu::always_inline]] constexpr J jet_product(const J& a, const J& b) {
   return {a.f * b.f,
           a.fu * b.f + a.f * b.fu,
           a.fv * b.f + a.f * b.fv,
@@ -58,14 +61,34 @@ constexpr Jet operator*(const Jet& a, const Jet& b) {
           a.fvv * b.f + 2 * a.fv * b.fv + a.f * b.fvv};
 }
 
-// Applies a scalar function g with g(x) = d0, g'(x) = d1, g''(x) = d2 by the chain rule.
-constexpr Jet chain(const Jet& a, double d0, double d1, double d2) {
+// a * l for an l linear in (u, v) (zero Hessian, which is not read).
+template <class J, class L>
+[[gnu::always_inline]] constexpr J jet_times_linear(const J& a, const L& l) {
+  return {a.f * l.f,
+          a.fu * l.f + a.f * l.fu,
+          a.fv * l.f + a.f * l.fv,
+          a.fuu * l.f + 2 * a.fu * l.fu,
+          a.fuv * l.f + a.fu * l.fv + a.fv * l.fu,
+          a.fvv * l.f + 2 * a.fv * l.fv};
+}
+
+template <class J, class D>
+[[gnu::always_inline]] constexpr J jet_chain(const J& a, const D& d0, const D& d1, const D& d2) {
   return {d0,
           d1 * a.fu,
           d1 * a.fv,
           d1 * a.fuu + d2 * a.fu * a.fu,
           d1 * a.fuv + d2 * a.fu * a.fv,
           d1 * a.fvv + d2 * a.fv * a.fv};
+}
+
+constexpr Jet operator*(const Jet& a, const Jet& b) {
+  return jet_product(a, b);
+}
+
+// Applies a scalar function g with g(x) = d0, g'(x) = d1, g''(x) = d2 by the chain rule.
+constexpr Jet chain(const Jet& a, double d0, double d1, double d2) {
+  return jet_chain(a, d0, d1, d2);
 }
 
 inline Jet reciprocal(const Jet& a) {

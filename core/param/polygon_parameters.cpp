@@ -30,14 +30,22 @@ Jet PolygonParameters::side_area(int m, Vec2 x) const {
 }
 
 namespace {
-// a * l for a linear l (zero Hessian): the products of side areas need no full Jet product.
-inline Jet times_linear(const Jet& a, const Jet& l) {
-  return {a.f * l.f,
-          a.fu * l.f + a.f * l.fu,
-          a.fv * l.f + a.f * l.fv,
-          a.fuu * l.f + 2 * a.fu * l.fu,
-          a.fuv * l.f + a.fu * l.fv + a.fv * l.fu,
-          a.fvv * l.f + 2 * a.fv * l.fv};
+// The Wachspress weights w_i = C_i * (product of the side areas L_m but sides i and i+1) by
+// prefix and suffix products, for Jet and for JetLanes with the same operations.
+template <class J, class Linear>
+[[gnu::always_inline]] inline void wachspress_weights(int n, const Linear* L, const double* corner,
+                                                      const J& one, J* prefix, J* suffix, J* w) {
+  const auto scaled = [](J a, double c) -> J {
+    return {a.f * c, a.fu * c, a.fv * c, a.fuu * c, a.fuv * c, a.fvv * c};
+  };
+  prefix[0] = one;
+  for (int m = 0; m < n; ++m) prefix[m + 1] = jet_times_linear(prefix[m], L[m]);
+  suffix[n] = one;
+  for (int m = n - 1; m >= 0; --m) suffix[m] = jet_times_linear(suffix[m + 1], L[m]);
+  for (int i = 0; i + 1 < n; ++i) w[i] = scaled(jet_product(prefix[i], suffix[i + 2]), corner[i]);
+  J p = one;  // i = n-1 omits sides n-1 and 0
+  for (int m = 1; m < n - 1; ++m) p = jet_times_linear(p, L[m]);
+  w[n - 1] = scaled(p, corner[n - 1]);
 }
 }  // namespace
 
@@ -47,17 +55,7 @@ void PolygonParameters::evaluate(Vec2 x, std::span<Jet> lambda, std::span<Jet> s
   Scratch<Jet, kMaxSides> L, w;
   Scratch<Jet, kMaxSides + 1> prefix, suffix;
   for (int m = 0; m < n; ++m) L[m] = side_area(m, x);
-  // w_i omits the two sides meeting at v_i: side i and side i+1.
-  prefix[0] = Jet(1.0);
-  for (int m = 0; m < n; ++m) prefix[m + 1] = times_linear(prefix[m], L[m]);
-  suffix[n] = Jet(1.0);
-  for (int m = n - 1; m >= 0; --m) suffix[m] = times_linear(suffix[m + 1], L[m]);
-  for (int i = 0; i + 1 < n; ++i) w[i] = corner_[i] * (prefix[i] * suffix[i + 2]);
-  {
-    Jet p(1.0);  // i = n-1 omits sides n-1 and 0
-    for (int m = 1; m < n - 1; ++m) p = times_linear(p, L[m]);
-    w[n - 1] = corner_[n - 1] * p;
-  }
+  wachspress_weights(n, L.data(), corner_.data(), Jet(1.0), prefix.data(), suffix.data(), w.data());
   Jet total;
   for (int i = 0; i < n; ++i) total += w[i];
   const Jet r = reciprocal(total);
@@ -75,6 +73,39 @@ void PolygonParameters::evaluate(Vec2 x, std::span<Jet> lambda, std::span<Jet> s
       const Jet num = corner_[i] * L[wrap(i - 1)];
       s[i] = num / (corner_[wrap(i - 1)] * L[wrap(i + 1)] + num);
     }
+  }
+}
+
+PATCHLAB_LANES_CLONES
+void PolygonParameters::evaluate_lanes(const Lane& u, const Lane& v, JetLanes* s, JetLanes* h,
+                                       uint32_t sides) const {
+  const int n = n_;
+  LinearLanes L[kMaxSides];
+  for (int m = 0; m < n; ++m) {
+    const Vec2 a = vertex(m - 1), e = vertex(m) - a;
+    L[m] = {e.x * (v - a.y) - e.y * (u - a.x), -e.y, e.x};
+  }
+  // evaluate()'s operations, so that every lane computes evaluate()'s numbers.
+  JetLanes w[kMaxSides], prefix[kMaxSides + 1], suffix[kMaxSides + 1];
+  wachspress_weights(n, L, corner_.data(), constant_lanes(1.0), prefix, suffix, w);
+  JetLanes total = constant_lanes(0);
+  for (int i = 0; i < n; ++i) add_to(total, w[i]);
+  const JetLanes r = reciprocal(total);
+  for (int i = 0; i < n; ++i) {
+    if (!(sides >> i & 1u)) continue;
+    JetLanes rest = constant_lanes(0);  // every vertex not on side i, as evaluate() sums them
+    for (int j = 0; j < n; ++j)
+      if (j != wrap(i - 1) && j != i) add_to(rest, w[j]);
+    h[i] = product(rest, r);
+    const LinearLanes& prev = L[wrap(i - 1)];
+    const LinearLanes& next = L[wrap(i + 1)];
+    const double ci = corner_[i], cp = corner_[wrap(i - 1)];
+    const LinearLanes num{ci * prev.f, ci * prev.fu, ci * prev.fv};
+    const LinearLanes den{cp * next.f + num.f, cp * next.fu + num.fu, cp * next.fv + num.fv};
+    // As a full product in evaluate()'s operand order: s is 0/0-like near the far vertices of a
+    // triangle, where a different summation order of its Hessian shows.
+    const Lane z{};
+    s[i] = product(JetLanes{num.f, z + num.fu, z + num.fv, z, z, z}, reciprocal(den));
   }
 }
 

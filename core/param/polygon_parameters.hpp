@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/math/jet.hpp"
+#include "core/math/lanes.hpp"
 #include "core/math/vec.hpp"
 
 namespace pl {
@@ -39,6 +40,9 @@ class PolygonParameters {
   // computed only for the sides whose bit is set in `sides` (the others are left untouched).
   void evaluate(Vec2 x, std::span<Jet> lambda, std::span<Jet> s, std::span<Jet> h,
                 uint32_t sides = ~0u) const;
+  // The same for kLanes points (u[b], v[b]) at once, s and h only (arrays of sides() entries).
+  void evaluate_lanes(const Lane& u, const Lane& v, JetLanes* s, JetLanes* h,
+                      uint32_t sides = ~0u) const;
 
  private:
   Jet side_area(int m, Vec2 x) const;  // L_m(x), > 0 inside

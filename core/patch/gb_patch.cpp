@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/math/bernstein_jets.hpp"
+#include "core/math/lanes.hpp"
 #include "core/math/scratch.hpp"
 
 namespace pl {
@@ -493,18 +494,231 @@ void GBPatch::basis(Vec2 x, std::span<Jet> out) const {
   for (Jet& j : out) shift(j, x - domain_.vertex(v));
 }
 
+Jet GBPatch::influence_at(std::size_t k, Vec2 x) const {
+  if (vertex_at(x) < 0) return influence_regular(k, x);
+  std::vector<Jet> phi(size());
+  basis(x, phi);
+  return phi[k];
+}
+
 void GBPatch::influence(std::size_t k, std::span<const Vec2> xs, std::span<Jet> out) const {
   assert(k < size() && xs.size() == out.size());
-  std::vector<Jet> phi;
-  for (std::size_t p = 0; p < xs.size(); ++p) {
-    if (vertex_at(xs[p]) < 0) {
-      out[p] = influence_regular(k, xs[p]);
-      continue;
-    }
-    phi.resize(size());
-    basis(xs[p], phi);
-    out[p] = phi[k];
+  if (k == 0) {  // the central weight needs every ribbon: the scalar path
+    for (std::size_t p = 0; p < xs.size(); ++p) out[p] = influence_at(k, xs[p]);
+    return;
   }
+  for_lane_blocks(
+      xs,
+      [&](const Lane& u, const Lane& v, std::size_t first, int count) {
+        influence_lanes(k, u, v, &out[first], count);
+      },
+      [&](std::size_t p) { out[p] = influence_at(k, xs[p]); });
+}
+
+// ---- Batched evaluation: kLanes samples at once, one per SIMD lane.
+// ------------------------------- The same formulas (and operation order) as evaluate_regular /
+// influence_regular, with every per-sample number a Lane; only the Wachspress products are grouped
+// differently (PolygonParameters::evaluate_lanes) and the ISA clones may contract a*b+c into FMAs.
+
+namespace {
+
+// A Vec3 per lane, and a surface jet or (s, h) jet of them: [derivative][coordinate].
+using Vec3Lanes = Lane[3];
+struct SurfaceLanes {
+  Lane c[6][3];  // p, su, sv, suu, suv, svv (or g, gs, gh, gss, gsh, ghh)
+};
+
+PATCHLAB_LANES_INLINE void clear(SurfaceLanes& a) {
+  for (auto& row : a.c)
+    for (Lane& x : row) x = Lane{};
+}
+
+// to_uv of evaluate_regular: the (u, v) jet of G(s(u,v), h(u,v)), coordinate by coordinate.
+PATCHLAB_LANES_INLINE void to_uv(const SurfaceLanes& G, const JetLanes& s, const JetLanes& h,
+                                 SurfaceLanes& out) {
+  const Lane ss_u = s.fu * s.fu, sh_u = 2 * s.fu * h.fu, hh_u = h.fu * h.fu;
+  const Lane ss_uv = s.fu * s.fv, sh_uv = s.fu * h.fv + s.fv * h.fu, hh_uv = h.fu * h.fv;
+  const Lane ss_v = s.fv * s.fv, sh_v = 2 * s.fv * h.fv, hh_v = h.fv * h.fv;
+  for (int c = 0; c < 3; ++c) {
+    const Lane g = G.c[0][c], gs = G.c[1][c], gh = G.c[2][c];
+    const Lane gss = G.c[3][c], gsh = G.c[4][c], ghh = G.c[5][c];
+    out.c[0][c] = g;
+    out.c[1][c] = s.fu * gs + h.fu * gh;
+    out.c[2][c] = s.fv * gs + h.fv * gh;
+    out.c[3][c] = ss_u * gss + sh_u * gsh + hh_u * ghh + s.fuu * gs + h.fuu * gh;
+    out.c[4][c] = ss_uv * gss + sh_uv * gsh + hh_uv * ghh + s.fuv * gs + h.fuv * gh;
+    out.c[5][c] = ss_v * gss + sh_v * gsh + hh_v * ghh + s.fvv * gs + h.fvv * gh;
+  }
+}
+
+// S += D * w (times() of evaluate_regular).
+PATCHLAB_LANES_INLINE void add_times(SurfaceLanes& S, const SurfaceLanes& D, const JetLanes& w) {
+  for (int c = 0; c < 3; ++c) {
+    const Lane p = D.c[0][c], su = D.c[1][c], sv = D.c[2][c];
+    S.c[0][c] += p * w.f;
+    S.c[1][c] += su * w.f + p * w.fu;
+    S.c[2][c] += sv * w.f + p * w.fv;
+    S.c[3][c] += D.c[3][c] * w.f + 2.0 * w.fu * su + p * w.fuu;
+    S.c[4][c] += D.c[4][c] * w.f + su * w.fv + sv * w.fu + p * w.fuv;
+    S.c[5][c] += D.c[5][c] * w.f + 2.0 * w.fv * sv + p * w.fvv;
+  }
+}
+
+PATCHLAB_LANES_INLINE void sum_uv(SurfaceLanes& S, const SurfaceLanes& G, const JetLanes& s,
+                                  const JetLanes& h) {
+  SurfaceLanes T;
+  to_uv(G, s, h, T);
+  for (int r = 0; r < 6; ++r)
+    for (int c = 0; c < 3; ++c) S.c[r][c] += T.c[r][c];
+}
+
+}  // namespace
+
+PATCHLAB_LANES_CLONES
+void GBPatch::evaluate_lanes(const Lane& u, const Lane& v, SurfaceJet* out, int count) const {
+  const int n = n_, d = d_, l = l_, groups = d >= 3 ? 3 : 1;
+  JetLanes s[kMaxSides], h[kMaxSides], alpha[kMaxSides];
+  params_.evaluate_lanes(u, v, s, h);
+  if (d >= 3)
+    for (int i = 0; i < n; ++i) {
+      const JetLanes& prev = h[params_.wrap(i - 1)];
+      alpha[i] = product(prev, reciprocal(sum(prev, h[i])));
+    }
+  SurfaceLanes S, A0, D, Bprev;
+  clear(S);
+  for (int c = 0; c < 3; ++c) S.c[0][c] = Lane{} + points_[0][c];
+  for (int i = 0; i < n; ++i) {
+    const BernsteinTableOf<Lane> bs(d, s[i].f), bh(d, h[i].f);
+    SurfaceLanes G[3];  // 0: C + B, 1: A, 2: B (see evaluate_regular)
+    for (int g = 0; g < groups; ++g) {
+      clear(G[g]);
+      for (int k = 0; k < l; ++k) {
+        const Span sp = span_[g * l + k];
+        if (sp.first > sp.last) continue;
+        const Vec3* P = &dense_[((i * 3 + g) * l + k) * (d + 1)];
+        Vec3Lanes r0{}, r1{}, r2{};
+        for (int j = sp.first; j <= sp.last; ++j)
+          for (int c = 0; c < 3; ++c) {
+            r0[c] += bs.d0[j] * P[j][c];
+            r1[c] += bs.d1[j] * P[j][c];
+            r2[c] += bs.d2[j] * P[j][c];
+          }
+        const Lane h0 = bh.d0[k], h1 = bh.d1[k], h2 = bh.d2[k];
+        for (int c = 0; c < 3; ++c) {
+          G[g].c[0][c] += h0 * r0[c];
+          G[g].c[1][c] += h0 * r1[c];
+          G[g].c[3][c] += h0 * r2[c];
+          G[g].c[2][c] += h1 * r0[c];
+          G[g].c[4][c] += h1 * r1[c];
+          G[g].c[5][c] += h2 * r0[c];
+        }
+      }
+    }
+    sum_uv(S, G[0], s[i], h[i]);
+    if (d < 3) continue;
+    // alpha_i (A_i - B_{i-1}): the difference first, as evaluate_regular takes it, because the
+    // two cancel near vertex i-1 where alpha_i's derivatives grow without bound.
+    SurfaceLanes A;
+    to_uv(G[1], s[i], h[i], i == 0 ? A0 : A);
+    if (i > 0) {
+      for (int r = 0; r < 6; ++r)
+        for (int c = 0; c < 3; ++c) D.c[r][c] = A.c[r][c] - Bprev.c[r][c];
+      add_times(S, D, alpha[i]);
+    }
+    to_uv(G[2], s[i], h[i], Bprev);
+  }
+  if (d >= 3) {
+    for (int r = 0; r < 6; ++r)
+      for (int c = 0; c < 3; ++c) D.c[r][c] = A0.c[r][c] - Bprev.c[r][c];
+    add_times(S, D, alpha[0]);
+  }
+  for (int b = 0; b < count; ++b) {
+    SurfaceJet& o = out[b];
+    Vec3* rows[6] = {&o.p, &o.su, &o.sv, &o.suu, &o.suv, &o.svv};
+    for (int r = 0; r < 6; ++r) *rows[r] = Vec3(S.c[r][0][b], S.c[r][1][b], S.c[r][2][b]);
+  }
+}
+
+PATCHLAB_LANES_CLONES
+void GBPatch::influence_lanes(std::size_t k, const Lane& u, const Lane& v, Jet* out,
+                              int count) const {
+  assert(k > 0);
+  // The sides local() would ask for; see there.
+  const int n = n_;
+  const uint32_t all = (1u << n) - 1;
+  const uint32_t weighted = weighted_of_[k] & all;
+  const uint32_t rotl = ((weighted << 1) | (weighted >> (n - 1))) & all;
+  const uint32_t alphas = d_ >= 3 ? weighted | rotl : 0;
+  const uint32_t rotr = ((alphas >> 1) | ((alphas & 1u) << (n - 1))) & all;
+  JetLanes s[kMaxSides], h[kMaxSides], alpha[kMaxSides];
+  params_.evaluate_lanes(u, v, s, h, ribbons_of_[k] | alphas | rotr);
+  for (int i = 0; i < n; ++i)
+    if (alphas >> i & 1u) {
+      const JetLanes& prev = h[params_.wrap(i - 1)];
+      alpha[i] = product(prev, reciprocal(sum(prev, h[i])));
+    }
+  JetLanes w = constant_lanes(0);
+  for (const Occurrence& o : occurrences_[k]) {
+    JetLanes bj, bk;
+    const JetLanes &si = s[o.i], &hi = h[o.i];
+    Lane g, g1, g2;
+    bernstein_d2(d_, o.j, si.f, g, g1, g2);
+    bj = chain(si, g, g1, g2);
+    bernstein_d2(d_, o.k, hi.f, g, g1, g2);
+    bk = chain(hi, g, g1, g2);
+    JetLanes b = product(bj, bk);
+    switch (mu(o.j, o.k)) {
+      case Mu::Half:
+        b = scaled(b, 0.5);
+        break;
+      case Mu::Alpha:
+        b = product(b, alpha[o.i]);
+        break;
+      case Mu::Beta: {
+        const JetLanes& next = alpha[params_.wrap(o.i + 1)];
+        const Lane z{};  // Jet(1.0) - alpha, sign of zero included
+        const JetLanes beta{1.0 - next.f, z - next.fu,  z - next.fv,
+                            z - next.fuu, z - next.fuv, z - next.fvv};
+        b = product(b, beta);
+        break;
+      }
+      default:
+        break;
+    }
+    add_to(w, b);
+  }
+  for (int b = 0; b < count; ++b) out[b] = lane(w, b);
+}
+
+template <class Lanes, class AtVertex>
+void GBPatch::for_lane_blocks(std::span<const Vec2> xs, Lanes&& lanes, AtVertex&& at_vertex) const {
+  const Vec2 inside = domain_.interior_point();
+  for (std::size_t first = 0; first < xs.size(); first += kLanes) {
+    const int count = static_cast<int>(std::min<std::size_t>(kLanes, xs.size() - first));
+    Lane u = Lane{} + inside.x, v = Lane{} + inside.y;  // padding: any regular point
+    uint32_t at_vertices = 0;
+    for (int b = 0; b < count; ++b) {
+      const Vec2 x = xs[first + b];
+      if (vertex_at(x) >= 0) {
+        at_vertices |= 1u << b;
+        continue;
+      }
+      u[b] = x.x, v[b] = x.y;
+    }
+    lanes(u, v, first, count);
+    for (int b = 0; b < count; ++b)
+      if (at_vertices >> b & 1u) at_vertex(first + b);
+  }
+}
+
+void GBPatch::evaluate_many(std::span<const Vec2> xs, std::span<SurfaceJet> out) const {
+  assert(xs.size() == out.size());
+  for_lane_blocks(
+      xs,
+      [&](const Lane& u, const Lane& v, std::size_t first, int count) {
+        evaluate_lanes(u, v, &out[first], count);
+      },
+      [&](std::size_t p) { out[p] = evaluate(xs[p]); });
 }
 
 }  // namespace pl

@@ -49,7 +49,12 @@ class GBPatch final : public Patch {
   void set_control_point(std::size_t k, const Vec3& p) override;
   void basis(Vec2 x, std::span<Jet> out) const override;
   SurfaceJet evaluate(Vec2 x) const override;
+  // Blocks of kLanes points through evaluate_lanes (tests check it equals evaluate()).
+  void evaluate_many(std::span<const Vec2> xs, std::span<SurfaceJet> out) const override;
+  // Blocks of kLanes points through influence_lanes (k > 0; tests check it equals influence_at).
   void influence(std::size_t k, std::span<const Vec2> xs, std::span<Jet> out) const override;
+  // phi_k at one point by the scalar path: the reference of the batched influence().
+  Jet influence_at(std::size_t k, Vec2 x) const;
   // Side i: the layer-0 row P^i_{0..d,0}, from vertex i-1 to vertex i.
   std::vector<BezierCurve> boundary_curves() const override;
 
@@ -71,6 +76,14 @@ class GBPatch final : public Patch {
   // set in `weighted` (a subset of ribbons) with the h's they need.
   void local(Vec2 x, Local& out, uint32_t ribbons = ~0u, uint32_t weighted = ~0u) const;
   SurfaceJet evaluate_regular(Vec2 x) const;
+  // evaluate_regular and influence_regular (k > 0) at kLanes points (u[b], v[b]) at once, one
+  // per SIMD lane, written to out[0..count).
+  void evaluate_lanes(const Lane& u, const Lane& v, SurfaceJet* out, int count) const;
+  void influence_lanes(std::size_t k, const Lane& u, const Lane& v, Jet* out, int count) const;
+  // Runs `lanes(u, v, first, count)` on blocks of xs (points at a domain vertex replaced by the
+  // interior point), then `at_vertex(p)` for each of those points.
+  template <class Lanes, class AtVertex>
+  void for_lane_blocks(std::span<const Vec2> xs, Lanes&& lanes, AtVertex&& at_vertex) const;
   void basis_regular(Vec2 x, std::span<Jet> out) const;
   Jet influence_regular(std::size_t k, Vec2 x) const;
   void basis_vertex(int v, std::span<Jet> out) const;  // exact limits at domain vertex v

@@ -42,6 +42,13 @@ class Patch {
   // faster or better-conditioned forms (tests check both agree).
   virtual SurfaceJet evaluate(Vec2 x) const;
 
+  // evaluate() at many points: out[i] = evaluate(xs[i]), out.size() == xs.size(). The default
+  // loops; patch types override it with batched (SIMD across samples) forms that agree with
+  // evaluate() to rounding (tests check it).
+  virtual void evaluate_many(std::span<const Vec2> xs, std::span<SurfaceJet> out) const {
+    for (std::size_t i = 0; i < xs.size() && i < out.size(); ++i) out[i] = evaluate(xs[i]);
+  }
+
   // phi_k (one control point) at many domain points: the influence column of a drag.
   // The default evaluates the whole basis at every point.
   virtual void influence(std::size_t k, std::span<const Vec2> xs, std::span<Jet> out) const;
