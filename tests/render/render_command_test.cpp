@@ -32,6 +32,7 @@ TEST(RenderCommand, WrongUsageExits2) {
            {"render", kSaddle, "-o", out, "--size", "800"},            // not WxH
            {"render", kSaddle, "-o", out, "--mode", "mean+gaussian"},  // two base modes
            {"render", kSaddle, "-o", out, "--mode", "wireframe"},      // unknown mode
+           {"render", kSaddle, "-o", out, "--mode", "shaded+comb"},    // combs misspelt
            {"render", kSaddle, "-o", out, "--range", "0:1"},           // not around zero
            {"render", kSaddle, "-o", out, "--compare", "--scheme", "gb"},
        }) {
@@ -93,6 +94,42 @@ TEST(RenderCommand, WritesAPngOfTheRequestedSize) {
     }
     stbi_image_free(pixels);
   }
+}
+
+// Pixels of the combs' teal (green well above red, not below blue): no other overlay, surface
+// shading or backdrop has that hue.
+int teal_pixels(const std::filesystem::path& png) {
+  int w = 0, h = 0, n = 0;
+  stbi_uc* p = stbi_load(png.string().c_str(), &w, &h, &n, 4);
+  EXPECT_NE(p, nullptr) << png;
+  if (!p) return -1;
+  int count = 0;
+  for (int i = 0; i < w * h; ++i)
+    if (p[4 * i + 1] > p[4 * i] + 60 && p[4 * i + 1] >= p[4 * i + 2]) ++count;
+  stbi_image_free(p);
+  return count;
+}
+
+TEST(RenderCommand, CombsAddTealTeethOnNetworkCurvesAndBorders) {
+  std::string why;
+  if (!have_gl(why)) GTEST_SKIP() << "no OpenGL: " << why;
+  TempDir dir;
+  const std::string network = std::string(PATCHLAB_SOURCE_DIR) + "/assets/default.json";
+  auto render = [&](const std::string& file, const std::string& mode,
+                    std::vector<std::string> extra = {}) {
+    const auto out = dir / "out.png";
+    std::vector<std::string> args{"render",  file,        "-o", out.string(), "--size",
+                                  "300x225", "--density", "8",  "--mode",     mode};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const CliResult r = cli(args);
+    EXPECT_EQ(r.code, kExitOk) << mode << ": " << r.err;
+    return teal_pixels(out);
+  };
+  EXPECT_EQ(render(network, "shaded+network+borders"), 0);
+  EXPECT_GT(render(network, "shaded+network+combs"), 500);
+  EXPECT_GT(render(network, "combs"), 500);  // alone: on the network curves
+  EXPECT_GT(render(network, "mean+borders+combs", {"--compare"}), 1000);
+  EXPECT_GT(render(kSaddle, "shaded+borders+combs"), 200);  // explicit patch: borders
 }
 
 }  // namespace
