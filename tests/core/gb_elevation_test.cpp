@@ -224,6 +224,35 @@ TEST(GBElevation, InteriorDeviationAgainstTheBestPossibleNet) {
     }
 }
 
+TEST(GBElevation, ReferenceModelsAgainstTheAuthorsSamples) {
+  // The reference samples are transfinite's evaluations of the original nets: the elevated
+  // four-sided models must still reproduce all of them, every model its boundary samples.
+  PATCHLAB_REQUIRE_GB_REFERENCE();
+  for (const std::string& name : test::gb_reference_models()) {
+    const GBPatch patch = read_gbp(test::gb_reference_dir() / (name + ".gbp"));
+    const auto samples = test::read_gb_samples(test::gb_reference_dir() / (name + ".samples.txt"));
+    const int n = patch.sides();
+    const std::size_t boundary_end = n + 1 + 11 * n;  // vertices, centre, side lines
+    const double diag = test::bbox_diagonal(patch.control_points());
+    const GBPatch once = gb_elevate(patch), twice = gb_elevate(once);
+    for (const GBPatch* e : {&once, &twice}) {
+      double side = 0, interior = 0;
+      for (std::size_t k = 0; k < samples.size(); ++k) {
+        const double dev = glm::length(e->evaluate(samples[k].x).p - samples[k].p) / diag;
+        const bool on_boundary = k < boundary_end && k != static_cast<std::size_t>(n);  // n: centre
+        double& worst = on_boundary ? side : interior;
+        worst = std::max(worst, dev);
+      }
+      EXPECT_LT(side, 1e-12) << name << " degree " << e->degree();
+      if (n == 4) {
+        EXPECT_LT(interior, 1e-12) << name << " degree " << e->degree();
+      }
+      std::printf("[ reference ] %-9s d=%d->%d: boundary samples %.2g, interior and centre %.2g\n",
+                  name.c_str(), patch.degree(), e->degree(), side, interior);
+    }
+  }
+}
+
 TEST(GBElevation, RejectsDegreesOutsideTheRange) {
   EXPECT_THROW(gb_elevate(test::random_gb(5, 1, 1)), std::invalid_argument);
   EXPECT_THROW(gb_elevate(test::random_gb(5, GBPatch::kMaxDegree, 1)), std::invalid_argument);

@@ -62,7 +62,7 @@ Change compare(const GBRibbonPatch& a, const GBRibbonPatch& b) {
     for (int t = 0; t <= 12; ++t)
       c.boundary = std::max(c.boundary,
                             test::max_abs(ca[i].point(t / 12.0) - cb[i].point(t / 12.0)) / scale);
-  const Tessellation tess = a.domain().tessellate(16);
+  const Tessellation tess = a.domain().tessellate(10);
   std::vector<char> on_side(tess.points.size(), 0);
   for (const auto& s : tess.sides)
     for (uint32_t k : s) on_side[k] = 1;
