@@ -32,6 +32,9 @@ struct DrawScene {
   // borders, drawn on the curves that are shown when the `combs` overlay is on.
   std::vector<CurvatureComb> network_combs;
   std::vector<CurvatureComb> border_combs;
+  // Per border comb: true for a side of a network face, whose comb is its edge's. With both
+  // overlays on, only the network's is drawn (twice would double the alpha and the cost).
+  std::vector<bool> border_on_network;
 
   // Of the surfaces, net and curves: what a camera frames.
   Box bounds() const;

@@ -163,6 +163,11 @@ void GpuScene::update(const DrawScene& scene) {
   borders_.set(polylines(scene.borders), {});
   network_combs_.set(scene.network_combs);
   border_combs_.set(scene.border_combs);
+  std::vector<CurvatureComb> own;
+  for (std::size_t i = 0; i < scene.border_combs.size(); ++i)
+    if (i >= scene.border_on_network.size() || !scene.border_on_network[i])
+      own.push_back(scene.border_combs[i]);
+  patch_border_combs_.set(own);
   std::vector<CurvatureComb> all = scene.network_combs;
   all.insert(all.end(), scene.border_combs.begin(), scene.border_combs.end());
   const Box box = scene.bounds();

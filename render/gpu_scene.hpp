@@ -70,6 +70,8 @@ class GpuScene {
   const GpuPrimitives& borders() const { return borders_; }
   const GpuCombs& network_combs() const { return network_combs_; }
   const GpuCombs& border_combs() const { return border_combs_; }
+  // The border combs that are not also network edges' (DrawScene::border_on_network).
+  const GpuCombs& patch_border_combs() const { return patch_border_combs_; }
   // The automatic comb scale of this scene (tooth length per unit curvature, over the combs of
   // network curves and borders together so that coincident curves get equal teeth; 0 if every
   // curve is straight) and the tooth length it gives the reference curvature.
@@ -79,7 +81,7 @@ class GpuScene {
  private:
   std::vector<GpuSurface> surfaces_;
   GpuPrimitives net_lines_, net_points_, curves_, borders_;
-  GpuCombs network_combs_, border_combs_;
+  GpuCombs network_combs_, border_combs_, patch_border_combs_;
   double comb_scale_ = 0, comb_reference_length_ = 0;
 };
 

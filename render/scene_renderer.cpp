@@ -96,7 +96,10 @@ void SceneRenderer::draw(const GpuScene& scene, const Camera& camera,
     const double per_curvature =
         settings.comb_length.value_or(scene.comb_scale()) * settings.comb_scale;
     const double cap = kCombCap * scene.comb_reference_length() * settings.comb_scale;
-    if (borders) draw_combs(scene.border_combs(), vp, v, float(per_curvature), float(cap));
+    // A network face's border comb is its edge's: drawn once, with the network's.
+    if (borders)
+      draw_combs(network ? scene.patch_border_combs() : scene.border_combs(), vp, v,
+                 float(per_curvature), float(cap));
     if (network) draw_combs(scene.network_combs(), vp, v, float(per_curvature), float(cap));
   }
   if (settings.control_net) {

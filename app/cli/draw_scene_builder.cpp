@@ -46,6 +46,7 @@ DrawScene build_draw_scene(const Scene& scene, const SceneSurfaces& surfaces, in
     for (CurvatureComb& c : side_combs(s.evaluator->patch(), comb_teeth)) {
       d.borders.push_back(c.points);
       d.border_combs.push_back(std::move(c));
+      d.border_on_network.push_back(s.face >= 0);
     }
   }
   if (scene.network) {

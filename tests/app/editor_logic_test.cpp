@@ -173,6 +173,8 @@ TEST(EditorLiveSurfaces, IncrementalSyncMatchesAFreshEvaluation) {
   ASSERT_EQ(a.border_combs.size(), b.border_combs.size());
   ASSERT_EQ(a.borders.size(), a.border_combs.size());
   ASSERT_EQ(a.network_combs.size(), a.network_curves.size());
+  // Every border here is a network face's side: its comb is drawn with the network's.
+  ASSERT_EQ(a.border_on_network, std::vector<bool>(a.border_combs.size(), true));
   for (std::size_t c = 0; c < a.border_combs.size(); ++c) {
     ASSERT_EQ(a.border_combs[c].points.size(), b.border_combs[c].points.size());
     for (std::size_t i = 0; i < a.border_combs[c].points.size(); ++i) {

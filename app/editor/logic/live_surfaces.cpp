@@ -13,7 +13,7 @@ LiveSurfaces::LiveSurfaces(const Scene& scene, int density, std::optional<FaceSc
   }
   points_ = collect_scene_points(scene, evaluation_.surfaces());
   fill_overlays(scene, points_, comb_teeth_, draw_);
-  fill_borders(border_combs_, draw_);
+  fill_borders(evaluation_.surfaces(), border_combs_, draw_);
 }
 
 std::vector<int> LiveSurfaces::sync(const Scene& scene, uint64_t revision) {
@@ -35,7 +35,7 @@ std::vector<int> LiveSurfaces::sync(const Scene& scene, uint64_t revision) {
   }
   points_ = collect_scene_points(scene, evaluation_.surfaces());
   fill_overlays(scene, points_, comb_teeth_, draw_);
-  fill_borders(border_combs_, draw_);
+  fill_borders(evaluation_.surfaces(), border_combs_, draw_);
   revision_ = revision;
   last_sync_ms_ =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();

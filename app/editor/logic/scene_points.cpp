@@ -109,13 +109,16 @@ std::vector<CurvatureComb> border_combs(const SceneSurface& surface, int comb_te
   return side_combs(surface.evaluator->patch(), comb_teeth);
 }
 
-void fill_borders(const std::vector<std::vector<CurvatureComb>>& combs, DrawScene& draw) {
+void fill_borders(const SceneSurfaces& surfaces,
+                  const std::vector<std::vector<CurvatureComb>>& combs, DrawScene& draw) {
   draw.borders.clear();
   draw.border_combs.clear();
-  for (const auto& surface : combs)
-    for (const CurvatureComb& c : surface) {
+  draw.border_on_network.clear();
+  for (std::size_t s = 0; s < combs.size(); ++s)
+    for (const CurvatureComb& c : combs[s]) {
       draw.borders.push_back(c.points);
       draw.border_combs.push_back(c);
+      draw.border_on_network.push_back(surfaces.surfaces.at(s).face >= 0);
     }
 }
 

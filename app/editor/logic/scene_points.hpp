@@ -32,7 +32,8 @@ void fill_overlays(const Scene& scene, const ScenePoints& points, int comb_teeth
 // The border combs of one surface, one per domain side; their points are the border polylines.
 std::vector<CurvatureComb> border_combs(const SceneSurface& surface, int comb_teeth);
 
-// Sets draw.borders and draw.border_combs from per-surface border combs.
-void fill_borders(const std::vector<std::vector<CurvatureComb>>& combs, DrawScene& draw);
+// Sets draw.borders, border_combs and border_on_network from per-surface border combs.
+void fill_borders(const SceneSurfaces& surfaces,
+                  const std::vector<std::vector<CurvatureComb>>& combs, DrawScene& draw);
 
 }  // namespace pl
