@@ -146,6 +146,35 @@ TEST(GBElevation, FourSidedNetIsTheTensorProductElevation) {
   }
 }
 
+TEST(GBElevation, EveryRibbonIsItsTensorProductElevation) {
+  // Read through every ribbon, shared corner points included: ribbon i of the new net is the
+  // textbook elevation of ribbon i of the old one, so the ribbons sharing a corner block agree.
+  // Rows k < l only: they need old rows below l, which every ribbon owns (for even d the
+  // innermost new row also needs the tensor-product middle row, checked by the n = 4 tests).
+  double worst = 0;
+  for (int n = 3; n <= 9; ++n)
+    for (int d = 2; d <= 7; ++d) {
+      const GBPatch g = test::random_gb(n, d, 80 + n * d), e = gb_elevate(g);
+      const double scale = test::bbox_diagonal(g.control_points());
+      for (int i = 0; i < n; ++i)
+        for (int k = 0; k < g.layers() && k < e.layers(); ++k)
+          for (int j = 0; j <= d + 1; ++j) {
+            Vec3 q(0);
+            for (int a = 0; a <= 1; ++a)
+              for (int b = 0; b <= 1; ++b) {
+                if (j - a < 0 || j - a > d || k - b < 0) continue;
+                const double wj = a ? double(j) / (d + 1) : 1 - double(j) / (d + 1);
+                const double wk = b ? double(k) / (d + 1) : 1 - double(k) / (d + 1);
+                q += wj * wk * g.point(i, j - a, k - b);
+              }
+            worst = std::max(worst, test::max_abs(e.point(i, j, k) - q) / scale);
+          }
+      ASSERT_LT(worst, 1e-14 * 10) << "n=" << n << " d=" << d;
+    }
+  std::printf("[ ribbons   ] n=3..9 d=2..7: every ribbon row k < l vs its own elevation %.2g\n",
+              worst);
+}
+
 TEST(GBElevation, KeepsBoundaryAndTangentPlanesForEverySideCount) {
   // Degree 2 is our quadratic variant (no ribbon row 1: its cross derivative comes from C_0 and
   // the neighbouring sides through rational weights); for n != 4 its elevation keeps positions
