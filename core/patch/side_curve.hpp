@@ -10,7 +10,8 @@
 
 namespace pl {
 
-// Side parameter t in [0, 1] from the side's start vertex, as Domain::side_point.
+// Side parameter t in [0, 1] from the side's start vertex, as Domain::side_point. At the end
+// vertices (t = 0, 1) C'' is the limit along the side, extrapolated from just inside it.
 CurvePoint side_curve_point(const Patch& patch, int side, double t);
 
 // The curvature comb of side `side` (see curvature_comb), its points on the exact surface.

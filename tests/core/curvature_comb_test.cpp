@@ -8,14 +8,18 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
+#include <string>
 
 #include "core/curve/curvature.hpp"
 #include "core/curve/nurbs_curve.hpp"
 #include "core/domain/tessellation_cache.hpp"
 #include "core/eval/scene_surfaces.hpp"
+#include "core/io/gbp_io.hpp"
 #include "core/io/scene_io.hpp"
 #include "core/patch/bezier_patch.hpp"
 #include "core/patch/side_curve.hpp"
+#include "gb_test_util.hpp"
 #include "test_util.hpp"
 
 namespace pl {
@@ -146,34 +150,64 @@ TEST(CurvatureComb, BezierPatchSidesMatchTheirBoundaryCurves) {
   EXPECT_LT(worst, 1e-12);
 }
 
-// Gregory and GB faces of the default scene interpolate the network's cubic edges; at corners
-// their rational weights are 0/0 and evaluate() returns limits. The side comb must still be the
-// edge's comb, corners included.
+// Gregory and GB faces of network scenes (convex, concave, closed) interpolate the network's cubic
+// edges; at corners their rational weights are 0/0 and evaluate() returns limits. The side comb
+// must still be the edge's comb, corners included.
 TEST(CurvatureComb, NetworkFaceSidesMatchTheirEdgesCornersIncluded) {
-  const Scene scene = read_scene(asset("default.json"));
   TessellationCache cache;
-  for (FaceScheme scheme : {FaceScheme::Gregory, FaceScheme::GB}) {
-    const SceneSurfaces surfaces = evaluate_scene(scene, 4, scheme, cache, "default.json");
-    double worst = 0, worst_corner = 0;
-    for (const SceneSurface& s : surfaces.surfaces) {
-      const Patch& p = s.evaluator->patch();
-      const std::vector<BezierCurve> sides = p.boundary_curves();
-      for (int side = 0; side < p.domain().side_count(); ++side) {
-        const CurvatureComb a = side_comb(p, side, 32), b = curvature_comb(sides[side], 32);
-        for (std::size_t i = 0; i < a.points.size(); ++i) {
-          ASSERT_TRUE(finite(a.teeth[i]) && finite(a.points[i]));
-          const double d =
-              std::max(max_abs(a.points[i] - b.points[i]),
-                       max_abs(a.teeth[i] - b.teeth[i]) / (1 + glm::length(b.teeth[i])));
-          (i == 0 || i + 1 == a.points.size() ? worst_corner : worst) =
-              std::max(i == 0 || i + 1 == a.points.size() ? worst_corner : worst, d);
+  // Per patch type: the largest deviation inside the sides and at their ends (the corners).
+  std::map<std::string, std::pair<double, double>> worst;
+  for (const char* file : {"default.json", "gb-concave-l.json", "gregory-blob-closed.json"})
+    for (FaceScheme scheme : {FaceScheme::Gregory, FaceScheme::GB}) {
+      const SceneSurfaces surfaces =
+          evaluate_scene(read_scene(asset(file)), 4, scheme, cache, file);
+      for (const SceneSurface& s : surfaces.surfaces) {
+        const Patch& p = s.evaluator->patch();
+        auto& [inside, corner] = worst[p.type()];
+        const std::vector<BezierCurve> sides = p.boundary_curves();
+        for (int side = 0; side < p.domain().side_count(); ++side) {
+          const CurvatureComb a = side_comb(p, side, 32), b = curvature_comb(sides[side], 32);
+          for (std::size_t i = 0; i < a.points.size(); ++i) {
+            ASSERT_TRUE(finite(a.teeth[i]) && finite(a.points[i]));
+            const double d =
+                std::max(max_abs(a.points[i] - b.points[i]),
+                         max_abs(a.teeth[i] - b.teeth[i]) / (1 + glm::length(b.teeth[i])));
+            double& w = i == 0 || i + 1 == a.points.size() ? corner : inside;
+            w = std::max(w, d);
+          }
         }
       }
     }
-    std::printf("%s faces: side comb vs edge comb %.3g inside, %.3g at corners\n",
-                scheme == FaceScheme::GB ? "GB" : "Gregory", worst, worst_corner);
-    EXPECT_LT(worst, 1e-12);
-    EXPECT_LT(worst_corner, 1e-12);
+  EXPECT_TRUE(worst.count("gregory-quad") && worst.count("gregory-tri") &&
+              worst.count("gb-ribbons"));
+  for (const auto& [type, w] : worst) {
+    std::printf("%s sides: comb vs edge comb %.3g inside, %.3g at corners\n", type.c_str(), w.first,
+                w.second);
+    EXPECT_LT(w.first, 1e-12) << type;
+    EXPECT_LT(w.second, 1e-12) << type;
+  }
+}
+
+// Plain GB patches (the reference models, 3 to 7 sides): corner weights are 0/0 there too.
+TEST(CurvatureComb, GBReferencePatchSidesMatchTheirBoundaryCurves) {
+  for (const std::string& name : test::gb_reference_models()) {
+    const GBPatch patch = read_gbp(test::gb_reference_dir() / (name + ".gbp"));
+    const std::vector<BezierCurve> sides = patch.boundary_curves();
+    double inside = 0, corner = 0;
+    for (int side = 0; side < patch.domain().side_count(); ++side) {
+      const CurvatureComb a = side_comb(patch, side, 32), b = curvature_comb(sides[side], 32);
+      for (std::size_t i = 0; i < a.points.size(); ++i) {
+        ASSERT_TRUE(finite(a.teeth[i]) && finite(a.points[i]));
+        const double d = std::max(max_abs(a.points[i] - b.points[i]),
+                                  max_abs(a.teeth[i] - b.teeth[i]) / (1 + glm::length(b.teeth[i])));
+        double& w = i == 0 || i + 1 == a.points.size() ? corner : inside;
+        w = std::max(w, d);
+      }
+    }
+    std::printf("gb %-9s sides: comb vs boundary Bezier comb %.3g inside, %.3g at corners\n",
+                name.c_str(), inside, corner);
+    EXPECT_LT(inside, 1e-12) << name;
+    EXPECT_LT(corner, 1e-12) << name;
   }
 }
 
