@@ -1,7 +1,9 @@
 // Jets of several samples at once, one sample per SIMD lane (GCC vector extensions), for batched
-// evaluation: the same formulas as jet.hpp, so a lane computes what the scalar Jet computes (up to
-// the FMA contraction of the ISA-specific clones). Lane is 8 doubles: 4 SSE2, 2 AVX2 or 1 AVX-512
-// register, so the portable build vectorises too.
+// evaluation: the same formulas as jet.hpp, so a lane computes what the scalar Jet computes (the
+// core is built with -ffp-contract=off, so the ISA-specific clones form no FMAs either).
+// Lane is 4 doubles, one AVX2 register (two SSE2 ones in the portable build). Measured on the
+// GB patch: 8 lanes ran 30% faster as native AVX-512 registers but 7x slower on AVX2 (GCC lowers
+// vectors wider than the ISA through memory), and an AVX-512 clone of 4 lanes gained nothing.
 //
 // Functions that use lanes are compiled for several ISAs with PATCHLAB_LANES_CLONES (GCC function
 // multiversioning, chosen at load time by the CPU); every helper here is always_inline so it is
@@ -13,13 +15,11 @@
 
 namespace pl {
 
-inline constexpr int kLanes = 8;
+inline constexpr int kLanes = 4;
 using Lane = double __attribute__((vector_size(kLanes * sizeof(double))));
 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
-#define PATCHLAB_LANES_CLONES                                                  \
-  __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"), \
-                 optimize("fp-contract=off")))
+#define PATCHLAB_LANES_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
 #else
 #define PATCHLAB_LANES_CLONES
 #endif

@@ -35,7 +35,7 @@ namespace {
 template <class J, class Linear>
 [[gnu::always_inline]] inline void wachspress_weights(int n, const Linear* L, const double* corner,
                                                       const J& one, J* prefix, J* suffix, J* w) {
-  const auto scaled = [](J a, double c) -> J {
+  const auto scaled = [](const J& a, double c) -> J {
     return {a.f * c, a.fu * c, a.fv * c, a.fuu * c, a.fuv * c, a.fvv * c};
   };
   prefix[0] = one;
