@@ -37,15 +37,22 @@ PatchEvaluator::PatchEvaluator(std::shared_ptr<Patch> patch,
   evaluate_all();
 }
 
-void PatchEvaluator::update_geometry(std::size_t i) {
-  SurfaceGeometry g = differential_geometry(jets_[i]);
-  if (g.status == GeometryStatus::Singular) {
+void PatchEvaluator::update_geometry(std::span<const uint32_t> index, std::size_t first,
+                                     std::size_t count) {
+  // Batched over the samples, then the rare singular ones again from the limit inside.
+  if (index.empty())
+    differential_geometry_many(std::span(jets_).subspan(first, count),
+                               std::span(geometry_).subspan(first, count));
+  else
+    differential_geometry_many(jets_, index.subspan(first, count), geometry_);
+  for (std::size_t j = first; j < first + count; ++j) {
+    const std::size_t i = index.empty() ? j : index[j];
+    if (geometry_[i].status != GeometryStatus::Singular) continue;
     const Vec2 x = tessellation_->points[i];
     const Vec2 inside = x + kSingularNudge * (patch_->domain().interior_point() - x);
-    g = differential_geometry(patch_->evaluate(inside));
-    g.status = GeometryStatus::Singular;
+    geometry_[i] = differential_geometry(patch_->evaluate(inside));
+    geometry_[i].status = GeometryStatus::Singular;
   }
-  geometry_[i] = g;
 }
 
 void PatchEvaluator::evaluate_all() {
@@ -56,7 +63,7 @@ void PatchEvaluator::evaluate_all() {
   for (std::ptrdiff_t b = 0; b < n; b += kChunk) {
     const std::ptrdiff_t e = std::min(n, b + kChunk);
     patch_->evaluate_many(std::span(xs).subspan(b, e - b), std::span(jets_).subspan(b, e - b));
-    for (std::ptrdiff_t i = b; i < e; ++i) update_geometry(i);
+    update_geometry({}, b, e - b);
   }
   columns_.clear();  // columns depend only on the basis, but a full rebuild starts clean
   ++revision_;
@@ -73,28 +80,29 @@ const PatchEvaluator::Column& PatchEvaluator::column(std::size_t k) {
   c.k = k;
   c.last_use = use_clock_;
   const auto& xs = tessellation_->points;
-  c.phi.resize(xs.size());
+  c.count = xs.size();
+  c.phi = allocate_jets(c.count);
   // Evaluate in parallel chunks: influence() is const and thread-safe.
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(xs.size());
   constexpr std::ptrdiff_t chunk = 4096;
-#pragma omp parallel for schedule(dynamic) if (n >= kParallelMin)
+  std::size_t nonzero = 0;
+#pragma omp parallel for schedule(dynamic) reduction(+ : nonzero) if (n >= kParallelMin)
   for (std::ptrdiff_t b = 0; b < n; b += chunk) {
     const std::ptrdiff_t e = std::min(n, b + chunk);
-    patch_->influence(k, std::span(xs).subspan(b, e - b), std::span(c.phi).subspan(b, e - b));
+    patch_->influence(k, std::span(xs).subspan(b, e - b), std::span(&c.phi[b], e - b));
+    for (std::ptrdiff_t i = b; i < e; ++i) nonzero += !c.phi[i].is_zero();
   }
-  std::size_t nonzero = 0;
-  for (const Jet& w : c.phi) nonzero += !w.is_zero();
-  if (nonzero * 2 < c.phi.size()) {  // sparse: keep only the samples it moves
+  if (nonzero * 2 < c.count) {  // sparse: keep only the samples it moves
     c.dense = false;
-    std::vector<Jet> packed;
-    packed.reserve(nonzero);
+    JetArray packed = allocate_jets(nonzero);
     c.index.reserve(nonzero);
-    for (std::size_t i = 0; i < c.phi.size(); ++i)
+    for (std::size_t i = 0; i < c.count; ++i)
       if (!c.phi[i].is_zero()) {
+        packed[c.index.size()] = c.phi[i];
         c.index.push_back(static_cast<uint32_t>(i));
-        packed.push_back(c.phi[i]);
       }
     c.phi = std::move(packed);
+    c.count = nonzero;
   }
   if (columns_.size() >= kMaxColumns) {
     auto oldest =
@@ -116,21 +124,15 @@ std::size_t PatchEvaluator::move_control_point(std::size_t k, const Vec3& p) {
   const Vec3 d = p - patch_->control_point(k);
   patch_->set_control_point(k, p);
   const Column& c = column(k);
-  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(c.phi.size());
-  if (c.dense) {
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(c.count);
+  // Dense columns update every sample (a zero weight adds zeros and recomputes the same geometry):
+  // cheaper than testing each weight.
+  const auto index = c.dense ? std::span<const uint32_t>() : std::span<const uint32_t>(c.index);
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
-    for (std::ptrdiff_t i = 0; i < n; ++i) {
-      if (c.phi[i].is_zero()) continue;
-      axpy(jets_[i], d, c.phi[i]);
-      update_geometry(i);
-    }
-  } else {
-#pragma omp parallel for schedule(static) if (n >= kParallelMin)
-    for (std::ptrdiff_t i = 0; i < n; ++i) {
-      const uint32_t s = c.index[i];
-      axpy(jets_[s], d, c.phi[i]);
-      update_geometry(s);
-    }
+  for (std::ptrdiff_t b = 0; b < n; b += kChunk) {
+    const std::ptrdiff_t e = std::min(n, b + kChunk);
+    for (std::ptrdiff_t i = b; i < e; ++i) axpy(jets_[index.empty() ? i : index[i]], d, c.phi[i]);
+    update_geometry(index, b, e - b);
   }
   // A point without influence here (an empty sparse column: e.g. a Catmull–Clark vertex far from
   // this face) changed no sample, so the renderer has nothing to re-upload.
@@ -140,7 +142,7 @@ std::size_t PatchEvaluator::move_control_point(std::size_t k, const Vec3& p) {
 
 std::size_t PatchEvaluator::influence_bytes() const {
   std::size_t b = 0;
-  for (const Column& c : columns_) b += c.phi.capacity() * sizeof(Jet) + c.index.capacity() * 4;
+  for (const Column& c : columns_) b += c.count * sizeof(Jet) + c.index.capacity() * 4;
   return b;
 }
 

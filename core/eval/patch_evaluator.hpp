@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cstdint>
 #include <memory>
+#include <new>
+#include <span>
 #include <vector>
 
 #include "core/domain/tessellation.hpp"
@@ -48,15 +50,26 @@ class PatchEvaluator {
   static constexpr std::size_t kMaxColumns = 4;
 
  private:
+  // Jets allocated but not initialised: the column build writes every one in parallel, and
+  // zero-filling a million-sample column first would cost a third of the build.
+  struct FreeJets {
+    void operator()(Jet* p) const { ::operator delete[](p); }
+  };
+  using JetArray = std::unique_ptr<Jet[], FreeJets>;
+  static JetArray allocate_jets(std::size_t count) {
+    return JetArray(static_cast<Jet*>(::operator new[](count * sizeof(Jet))));
+  }
   struct Column {
     std::size_t k = 0;
     uint64_t last_use = 0;
     bool dense = true;            // phi covers every sample; otherwise only `index`
     std::vector<uint32_t> index;  // sample indices with non-zero phi (sparse columns)
-    std::vector<Jet> phi;
+    JetArray phi;
+    std::size_t count = 0;  // entries of phi
   };
   const Column& column(std::size_t k);
-  void update_geometry(std::size_t sample);
+  // Geometry of samples first..first+count-1, or of index[first..first+count) if index is given.
+  void update_geometry(std::span<const uint32_t> index, std::size_t first, std::size_t count);
 
   std::shared_ptr<Patch> patch_;
   std::shared_ptr<const Tessellation> tessellation_;

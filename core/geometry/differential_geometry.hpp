@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 
 #include "core/patch/surface_jet.hpp"
 
@@ -31,6 +32,13 @@ struct FundamentalForms {
 
 // Normal and curvatures; status Singular (and zeros, never NaN) where the normal is undefined.
 SurfaceGeometry differential_geometry(const SurfaceJet& s);
+
+// differential_geometry of every sample (out[i] from s[i]), several samples per SIMD lane block;
+// the same numbers as the one-sample form.
+void differential_geometry_many(std::span<const SurfaceJet> s, std::span<SurfaceGeometry> out);
+// The same for the samples listed in index only: out[index[i]] from s[index[i]].
+void differential_geometry_many(std::span<const SurfaceJet> s, std::span<const uint32_t> index,
+                                std::span<SurfaceGeometry> out);
 
 // Fundamental forms; only meaningful where differential_geometry() reports Regular.
 FundamentalForms fundamental_forms(const SurfaceJet& s);

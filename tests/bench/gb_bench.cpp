@@ -44,6 +44,22 @@ void bench_gb(const Options& o) {
     PatchEvaluator ev(patch, pentagon(o.quick ? 60 : 632));  // 1,000,141 samples
     const double ms = median_ms(o.quick ? 2 : 7, [&] { ev.evaluate_all(); });
     figure("gb_full_eval_msamples_per_s", ev.sample_count() / (ms * 1e3), "Msamples/s");
+    // The same work one sample at a time (evaluate, differential_geometry), as evaluate_all did
+    // before the batched paths: the baseline of the speed-up, in the same run.
+    const auto& xs = ev.tessellation().points;
+    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(xs.size());
+    std::vector<SurfaceJet> jets(xs.size());
+    std::vector<SurfaceGeometry> geometry(xs.size());
+    const double scalar_ms = median_ms(o.quick ? 2 : 3, [&] {
+#pragma omp parallel for schedule(static)
+      for (std::ptrdiff_t i = 0; i < n; ++i) {
+        jets[i] = patch->evaluate(xs[i]);
+        geometry[i] = differential_geometry(jets[i]);
+      }
+    });
+    figure("gb_full_eval_scalar_msamples_per_s", ev.sample_count() / (scalar_ms * 1e3),
+           "Msamples/s");
+    figure("gb_full_eval_speedup_over_scalar", scalar_ms / ms, "x");
   }
   // An inner point of layer 1: it moves most of the patch.
   const std::size_t k = patch->index(1, 2, 1);
