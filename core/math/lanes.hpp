@@ -1,9 +1,11 @@
 // Jets of several samples at once, one sample per SIMD lane (GCC vector extensions), for batched
 // evaluation: the same formulas as jet.hpp, so a lane computes what the scalar Jet computes (the
 // core is built with -ffp-contract=off, so the ISA-specific clones form no FMAs either).
-// Lane is 4 doubles, one AVX2 register (two SSE2 ones in the portable build). Measured on the
-// GB patch: 8 lanes ran 30% faster as native AVX-512 registers but 7x slower on AVX2 (GCC lowers
-// vectors wider than the ISA through memory), and an AVX-512 clone of 4 lanes gained nothing.
+// Lanes come in two widths, each native to the ISA it is compiled for: 8 doubles (one AVX-512
+// register) in functions marked PATCHLAB_LANES_WIDE, called where wide_lanes() holds, and 4 (one
+// AVX2 register, two SSE2 ones in the portable build) in functions marked PATCHLAB_LANES_CLONES.
+// Measured on the GB patch: 8 lanes run ~30% faster than 4 with AVX-512 but 7x slower with AVX2
+// (GCC lowers vectors wider than the ISA through memory), and 4 lanes gain nothing from AVX-512.
 //
 // Functions that use lanes are compiled for several ISAs with PATCHLAB_LANES_CLONES (GCC function
 // multiversioning, chosen at load time by the CPU); every helper here is always_inline so it is
@@ -11,72 +13,116 @@
 // on the ISA, and GCC warns about that even for inlined functions).
 #pragma once
 
+#include <atomic>
+
 #include "core/math/jet.hpp"
 
 namespace pl {
 
-inline constexpr int kLanes = 4;
-using Lane = double __attribute__((vector_size(kLanes * sizeof(double))));
+template <int W>
+struct LaneType {
+  typedef double type __attribute__((vector_size(W * sizeof(double))));
+};
+template <int W>
+using LaneOf = typename LaneType<W>::type;
+inline constexpr int kLanes = 4, kWideLanes = 8;
+using Lane = LaneOf<kLanes>;
+using WideLane = LaneOf<kWideLanes>;
 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
 #define PATCHLAB_LANES_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#define PATCHLAB_LANES_WIDE __attribute__((target("arch=x86-64-v4")))
+// Whether this CPU runs PATCHLAB_LANES_WIDE code (x86-64-v4: AVX-512 F, BW, CD, DQ, VL over v3).
+inline bool cpu_has_wide_lanes() {
+  static const bool wide =
+      __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
+      __builtin_cpu_supports("avx512cd") && __builtin_cpu_supports("avx512dq") &&
+      __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx2") &&
+      __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi2");
+  return wide;
+}
 #else
 #define PATCHLAB_LANES_CLONES
+#define PATCHLAB_LANES_WIDE
+inline bool cpu_has_wide_lanes() {
+  return false;
+}
 #endif
+// Set by tests and benchmarks to run the kLanes forms on a CPU that has the wide ones.
+inline std::atomic<bool> narrow_lanes_only{false};
+inline bool wide_lanes() {
+  return !narrow_lanes_only.load(std::memory_order_relaxed) && cpu_has_wide_lanes();
+}
 #define PATCHLAB_LANES_INLINE [[gnu::always_inline]] inline
 
-struct JetLanes {
-  Lane f, fu, fv, fuu, fuv, fvv;
+// A jet per lane; V = Lane or WideLane.
+template <class V>
+struct JetLanesOf {
+  V f, fu, fv, fuu, fuv, fvv;
 };
+using JetLanes = JetLanesOf<Lane>;
+using WideJetLanes = JetLanesOf<WideLane>;
 
-PATCHLAB_LANES_INLINE JetLanes constant_lanes(double c) {
-  const Lane z{};
+template <class V>
+PATCHLAB_LANES_INLINE JetLanesOf<V> constant_lanes(double c) {
+  const V z{};
   return {z + c, z, z, z, z, z};
 }
 
-PATCHLAB_LANES_INLINE void add_to(JetLanes& a, const JetLanes& b) {
+template <class V>
+PATCHLAB_LANES_INLINE void add_to(JetLanesOf<V>& a, const JetLanesOf<V>& b) {
   a.f += b.f, a.fu += b.fu, a.fv += b.fv, a.fuu += b.fuu, a.fuv += b.fuv, a.fvv += b.fvv;
 }
 
-PATCHLAB_LANES_INLINE JetLanes sum(const JetLanes& a, const JetLanes& b) {
+template <class V>
+PATCHLAB_LANES_INLINE JetLanesOf<V> sum(const JetLanesOf<V>& a, const JetLanesOf<V>& b) {
   return {a.f + b.f, a.fu + b.fu, a.fv + b.fv, a.fuu + b.fuu, a.fuv + b.fuv, a.fvv + b.fvv};
 }
 
-PATCHLAB_LANES_INLINE JetLanes scaled(const JetLanes& a, double s) {
+template <class V>
+PATCHLAB_LANES_INLINE JetLanesOf<V> scaled(const JetLanesOf<V>& a, double s) {
   return {a.f * s, a.fu * s, a.fv * s, a.fuu * s, a.fuv * s, a.fvv * s};
 }
 
-PATCHLAB_LANES_INLINE JetLanes product(const JetLanes& a, const JetLanes& b) {
+template <class V>
+PATCHLAB_LANES_INLINE JetLanesOf<V> product(const JetLanesOf<V>& a, const JetLanesOf<V>& b) {
   return jet_product(a, b);
 }
 
 // A function linear in (u, v): value per lane, gradient shared by every lane.
-struct LinearLanes {
-  Lane f;
+template <class V>
+struct LinearLanesOf {
+  V f;
   double fu, fv;
 };
 
-PATCHLAB_LANES_INLINE JetLanes times_linear(const JetLanes& a, const LinearLanes& l) {
+template <class V>
+PATCHLAB_LANES_INLINE JetLanesOf<V> times_linear(const JetLanesOf<V>& a,
+                                                 const LinearLanesOf<V>& l) {
   return jet_times_linear(a, l);
 }
 
-PATCHLAB_LANES_INLINE JetLanes chain(const JetLanes& a, const Lane& d0, const Lane& d1,
-                                     const Lane& d2) {
+template <class V>
+PATCHLAB_LANES_INLINE JetLanesOf<V> chain(const JetLanesOf<V>& a, const V& d0, const V& d1,
+                                          const V& d2) {
   return jet_chain(a, d0, d1, d2);
 }
 
-PATCHLAB_LANES_INLINE JetLanes reciprocal(const JetLanes& a) {
-  const Lane r = 1.0 / a.f;
+template <class V>
+PATCHLAB_LANES_INLINE JetLanesOf<V> reciprocal(const JetLanesOf<V>& a) {
+  const V r = 1.0 / a.f;
   return chain(a, r, -r * r, 2 * r * r * r);
 }
 
 // 1 / l for a linear l.
-PATCHLAB_LANES_INLINE JetLanes reciprocal(const LinearLanes& l) {
-  const Lane r = 1.0 / l.f, d1 = -r * r, d2 = 2 * r * r * r;
+template <class V>
+PATCHLAB_LANES_INLINE JetLanesOf<V> reciprocal(const LinearLanesOf<V>& l) {
+  const V r = 1.0 / l.f, d1 = -r * r, d2 = 2 * r * r * r;
   return {r, d1 * l.fu, d1 * l.fv, d2 * l.fu * l.fu, d2 * l.fu * l.fv, d2 * l.fv * l.fv};
 }
 
-PATCHLAB_LANES_INLINE Jet lane(const JetLanes& a, int b) {
+template <class V>
+PATCHLAB_LANES_INLINE Jet lane(const JetLanesOf<V>& a, int b) {
   return {a.f[b], a.fu[b], a.fv[b], a.fuu[b], a.fuv[b], a.fvv[b]};
 }
 

@@ -76,37 +76,54 @@ void PolygonParameters::evaluate(Vec2 x, std::span<Jet> lambda, std::span<Jet> s
   }
 }
 
-PATCHLAB_LANES_CLONES
-void PolygonParameters::evaluate_lanes(const Lane& u, const Lane& v, JetLanes* s, JetLanes* h,
-                                       uint32_t sides) const {
+template <class V>
+[[gnu::always_inline]] inline void PolygonParameters::lanes(const V& u, const V& v,
+                                                            JetLanesOf<V>* s, JetLanesOf<V>* h,
+                                                            uint32_t sides) const {
+  using J = JetLanesOf<V>;
   const int n = n_;
-  LinearLanes L[kMaxSides];
+  LinearLanesOf<V> L[kMaxSides];
+  // Neighbour indices without wrap(): its modulo costs more than a block's arithmetic.
+  const auto before = [n](int i) { return i == 0 ? n - 1 : i - 1; };
+  const auto after = [n](int i) { return i + 1 == n ? 0 : i + 1; };
   for (int m = 0; m < n; ++m) {
-    const Vec2 a = vertex(m - 1), e = vertex(m) - a;
+    const Vec2 a = vertices_[before(m)], e = vertices_[m] - a;
     L[m] = {e.x * (v - a.y) - e.y * (u - a.x), -e.y, e.x};
   }
   // evaluate()'s operations, so that every lane computes evaluate()'s numbers.
-  JetLanes w[kMaxSides], prefix[kMaxSides + 1], suffix[kMaxSides + 1];
-  wachspress_weights(n, L, corner_.data(), constant_lanes(1.0), prefix, suffix, w);
-  JetLanes total = constant_lanes(0);
+  J w[kMaxSides], prefix[kMaxSides + 1], suffix[kMaxSides + 1];
+  wachspress_weights(n, L, corner_.data(), constant_lanes<V>(1.0), prefix, suffix, w);
+  J total = constant_lanes<V>(0);
   for (int i = 0; i < n; ++i) add_to(total, w[i]);
-  const JetLanes r = reciprocal(total);
+  const J r = reciprocal(total);
   for (int i = 0; i < n; ++i) {
     if (!(sides >> i & 1u)) continue;
-    JetLanes rest = constant_lanes(0);  // every vertex not on side i, as evaluate() sums them
+    J rest = constant_lanes<V>(0);  // every vertex not on side i, as evaluate() sums them
     for (int j = 0; j < n; ++j)
-      if (j != wrap(i - 1) && j != i) add_to(rest, w[j]);
+      if (j != before(i) && j != i) add_to(rest, w[j]);
     h[i] = product(rest, r);
-    const LinearLanes& prev = L[wrap(i - 1)];
-    const LinearLanes& next = L[wrap(i + 1)];
-    const double ci = corner_[i], cp = corner_[wrap(i - 1)];
-    const LinearLanes num{ci * prev.f, ci * prev.fu, ci * prev.fv};
-    const LinearLanes den{cp * next.f + num.f, cp * next.fu + num.fu, cp * next.fv + num.fv};
+    const LinearLanesOf<V>& prev = L[before(i)];
+    const LinearLanesOf<V>& next = L[after(i)];
+    const double ci = corner_[i], cp = corner_[before(i)];
+    const LinearLanesOf<V> num{ci * prev.f, ci * prev.fu, ci * prev.fv};
+    const LinearLanesOf<V> den{cp * next.f + num.f, cp * next.fu + num.fu, cp * next.fv + num.fv};
     // As a full product in evaluate()'s operand order: s is 0/0-like near the far vertices of a
     // triangle, where a different summation order of its Hessian shows.
-    const Lane z{};
-    s[i] = product(JetLanes{num.f, z + num.fu, z + num.fv, z, z, z}, reciprocal(den));
+    const V z{};
+    s[i] = product(J{num.f, z + num.fu, z + num.fv, z, z, z}, reciprocal(den));
   }
+}
+
+PATCHLAB_LANES_CLONES
+void PolygonParameters::evaluate_lanes(const Lane& u, const Lane& v, JetLanes* s, JetLanes* h,
+                                       uint32_t sides) const {
+  lanes(u, v, s, h, sides);
+}
+
+PATCHLAB_LANES_WIDE
+void PolygonParameters::evaluate_lanes(const WideLane& u, const WideLane& v, WideJetLanes* s,
+                                       WideJetLanes* h, uint32_t sides) const {
+  lanes(u, v, s, h, sides);
 }
 
 }  // namespace pl

@@ -40,12 +40,17 @@ class PolygonParameters {
   // computed only for the sides whose bit is set in `sides` (the others are left untouched).
   void evaluate(Vec2 x, std::span<Jet> lambda, std::span<Jet> s, std::span<Jet> h,
                 uint32_t sides = ~0u) const;
-  // The same for kLanes points (u[b], v[b]) at once, s and h only (arrays of sides() entries).
+  // The same for kLanes points (u[b], v[b]) at once, s and h only (arrays of sides() entries);
+  // the WideLane form only where wide_lanes() holds.
   void evaluate_lanes(const Lane& u, const Lane& v, JetLanes* s, JetLanes* h,
+                      uint32_t sides = ~0u) const;
+  void evaluate_lanes(const WideLane& u, const WideLane& v, WideJetLanes* s, WideJetLanes* h,
                       uint32_t sides = ~0u) const;
 
  private:
   Jet side_area(int m, Vec2 x) const;  // L_m(x), > 0 inside
+  template <class V>
+  void lanes(const V& u, const V& v, JetLanesOf<V>* s, JetLanesOf<V>* h, uint32_t sides) const;
 
   int n_;
   std::vector<Vec2> vertices_;

@@ -85,6 +85,10 @@ GBPatch::GBPatch(int sides, int degree, std::vector<Vec3> points)
       mu_[k * (d + 1) + j] = m;
     }
   update_relative(0);
+  vertex_distance_ = 1e300;
+  for (const Vec2& v : domain_.vertices())
+    vertex_distance_ =
+        std::min(vertex_distance_, std::max(0.0, glm::length(v) - 2 * kVertexRadius));
   grid_.resize(n_ * l * (d + 1));
   occurrences_.assign(size(), {});
   ribbons_of_.assign(size(), 0);
@@ -199,8 +203,11 @@ void GBPatch::local(Vec2 x, Local& out, uint32_t ribbons, uint32_t weighted) con
 }
 
 int GBPatch::vertex_at(Vec2 x) const {
+  // Every vertex is at least vertex_distance_ from the origin: most points are nearer to it.
+  if (glm::dot(x, x) < vertex_distance_ * vertex_distance_) return -1;
+  const auto& vertices = domain_.vertices();
   for (int i = 0; i < n_; ++i) {
-    const Vec2 d = x - domain_.vertex(i);
+    const Vec2 d = x - vertices[i];
     if (d.x * d.x + d.y * d.y < kVertexRadius * kVertexRadius) return i;
   }
   return -1;
@@ -507,12 +514,14 @@ void GBPatch::influence(std::size_t k, std::span<const Vec2> xs, std::span<Jet> 
     for (std::size_t p = 0; p < xs.size(); ++p) out[p] = influence_at(k, xs[p]);
     return;
   }
-  for_lane_blocks(
-      xs,
-      [&](const Lane& u, const Lane& v, std::size_t first, int count) {
-        influence_lanes(k, u, v, &out[first], count);
-      },
-      [&](std::size_t p) { out[p] = influence_at(k, xs[p]); });
+  const auto lanes = [&](const auto& u, const auto& v, std::size_t first, int count) {
+    influence_lanes(k, u, v, &out[first], count);
+  };
+  const auto at_vertex = [&](std::size_t p) { out[p] = influence_at(k, xs[p]); };
+  if (wide_lanes())
+    for_lane_blocks<WideLane>(xs, lanes, at_vertex);
+  else
+    for_lane_blocks<Lane>(xs, lanes, at_vertex);
 }
 
 // ---- Batched evaluation: kLanes samples at once, one per SIMD lane.
@@ -523,25 +532,27 @@ void GBPatch::influence(std::size_t k, std::span<const Vec2> xs, std::span<Jet> 
 namespace {
 
 // A Vec3 per lane, and a surface jet or (s, h) jet of them: [derivative][coordinate].
-using Vec3Lanes = Lane[3];
+template <class V>
 struct SurfaceLanes {
-  Lane c[6][3];  // p, su, sv, suu, suv, svv (or g, gs, gh, gss, gsh, ghh)
+  V c[6][3];  // p, su, sv, suu, suv, svv (or g, gs, gh, gss, gsh, ghh)
 };
 
-PATCHLAB_LANES_INLINE void clear(SurfaceLanes& a) {
+template <class V>
+PATCHLAB_LANES_INLINE void clear(SurfaceLanes<V>& a) {
   for (auto& row : a.c)
-    for (Lane& x : row) x = Lane{};
+    for (V& x : row) x = V{};
 }
 
 // to_uv of evaluate_regular: the (u, v) jet of G(s(u,v), h(u,v)), coordinate by coordinate.
-PATCHLAB_LANES_INLINE void to_uv(const SurfaceLanes& G, const JetLanes& s, const JetLanes& h,
-                                 SurfaceLanes& out) {
-  const Lane ss_u = s.fu * s.fu, sh_u = 2 * s.fu * h.fu, hh_u = h.fu * h.fu;
-  const Lane ss_uv = s.fu * s.fv, sh_uv = s.fu * h.fv + s.fv * h.fu, hh_uv = h.fu * h.fv;
-  const Lane ss_v = s.fv * s.fv, sh_v = 2 * s.fv * h.fv, hh_v = h.fv * h.fv;
+template <class V>
+PATCHLAB_LANES_INLINE void to_uv(const SurfaceLanes<V>& G, const JetLanesOf<V>& s,
+                                 const JetLanesOf<V>& h, SurfaceLanes<V>& out) {
+  const V ss_u = s.fu * s.fu, sh_u = 2 * s.fu * h.fu, hh_u = h.fu * h.fu;
+  const V ss_uv = s.fu * s.fv, sh_uv = s.fu * h.fv + s.fv * h.fu, hh_uv = h.fu * h.fv;
+  const V ss_v = s.fv * s.fv, sh_v = 2 * s.fv * h.fv, hh_v = h.fv * h.fv;
   for (int c = 0; c < 3; ++c) {
-    const Lane g = G.c[0][c], gs = G.c[1][c], gh = G.c[2][c];
-    const Lane gss = G.c[3][c], gsh = G.c[4][c], ghh = G.c[5][c];
+    const V g = G.c[0][c], gs = G.c[1][c], gh = G.c[2][c];
+    const V gss = G.c[3][c], gsh = G.c[4][c], ghh = G.c[5][c];
     out.c[0][c] = g;
     out.c[1][c] = s.fu * gs + h.fu * gh;
     out.c[2][c] = s.fv * gs + h.fv * gh;
@@ -552,9 +563,11 @@ PATCHLAB_LANES_INLINE void to_uv(const SurfaceLanes& G, const JetLanes& s, const
 }
 
 // S += D * w (times() of evaluate_regular).
-PATCHLAB_LANES_INLINE void add_times(SurfaceLanes& S, const SurfaceLanes& D, const JetLanes& w) {
+template <class V>
+PATCHLAB_LANES_INLINE void add_times(SurfaceLanes<V>& S, const SurfaceLanes<V>& D,
+                                     const JetLanesOf<V>& w) {
   for (int c = 0; c < 3; ++c) {
-    const Lane p = D.c[0][c], su = D.c[1][c], sv = D.c[2][c];
+    const V p = D.c[0][c], su = D.c[1][c], sv = D.c[2][c];
     S.c[0][c] += p * w.f;
     S.c[1][c] += su * w.f + p * w.fu;
     S.c[2][c] += sv * w.f + p * w.fv;
@@ -564,9 +577,10 @@ PATCHLAB_LANES_INLINE void add_times(SurfaceLanes& S, const SurfaceLanes& D, con
   }
 }
 
-PATCHLAB_LANES_INLINE void sum_uv(SurfaceLanes& S, const SurfaceLanes& G, const JetLanes& s,
-                                  const JetLanes& h) {
-  SurfaceLanes T;
+template <class V>
+PATCHLAB_LANES_INLINE void sum_uv(SurfaceLanes<V>& S, const SurfaceLanes<V>& G,
+                                  const JetLanesOf<V>& s, const JetLanesOf<V>& h) {
+  SurfaceLanes<V> T;
   to_uv(G, s, h, T);
   for (int r = 0; r < 6; ++r)
     for (int c = 0; c < 3; ++c) S.c[r][c] += T.c[r][c];
@@ -574,36 +588,37 @@ PATCHLAB_LANES_INLINE void sum_uv(SurfaceLanes& S, const SurfaceLanes& G, const 
 
 }  // namespace
 
-PATCHLAB_LANES_CLONES
-void GBPatch::evaluate_lanes(const Lane& u, const Lane& v, SurfaceJet* out, int count) const {
+template <class V>
+[[gnu::always_inline]] inline void GBPatch::evaluate_block(const V& u, const V& v, SurfaceJet* out,
+                                                           int count) const {
   const int n = n_, d = d_, l = l_, groups = d >= 3 ? 3 : 1;
-  JetLanes s[kMaxSides], h[kMaxSides], alpha[kMaxSides];
+  JetLanesOf<V> s[kMaxSides], h[kMaxSides], alpha[kMaxSides];
   params_.evaluate_lanes(u, v, s, h);
   if (d >= 3)
     for (int i = 0; i < n; ++i) {
-      const JetLanes& prev = h[params_.wrap(i - 1)];
+      const JetLanesOf<V>& prev = h[i == 0 ? n - 1 : i - 1];
       alpha[i] = product(prev, reciprocal(sum(prev, h[i])));
     }
-  SurfaceLanes S, A0, D, Bprev;
+  SurfaceLanes<V> S, A0, D, Bprev;
   clear(S);
-  for (int c = 0; c < 3; ++c) S.c[0][c] = Lane{} + points_[0][c];
+  for (int c = 0; c < 3; ++c) S.c[0][c] = V{} + points_[0][c];
   for (int i = 0; i < n; ++i) {
-    const BernsteinTableOf<Lane> bs(d, s[i].f), bh(d, h[i].f);
-    SurfaceLanes G[3];  // 0: C + B, 1: A, 2: B (see evaluate_regular)
+    const BernsteinTableOf<V> bs(d, s[i].f), bh(d, h[i].f);
+    SurfaceLanes<V> G[3];  // 0: C + B, 1: A, 2: B (see evaluate_regular)
     for (int g = 0; g < groups; ++g) {
       clear(G[g]);
       for (int k = 0; k < l; ++k) {
         const Span sp = span_[g * l + k];
         if (sp.first > sp.last) continue;
         const Vec3* P = &dense_[((i * 3 + g) * l + k) * (d + 1)];
-        Vec3Lanes r0{}, r1{}, r2{};
+        V r0[3]{}, r1[3]{}, r2[3]{};
         for (int j = sp.first; j <= sp.last; ++j)
           for (int c = 0; c < 3; ++c) {
             r0[c] += bs.d0[j] * P[j][c];
             r1[c] += bs.d1[j] * P[j][c];
             r2[c] += bs.d2[j] * P[j][c];
           }
-        const Lane h0 = bh.d0[k], h1 = bh.d1[k], h2 = bh.d2[k];
+        const V h0 = bh.d0[k], h1 = bh.d1[k], h2 = bh.d2[k];
         for (int c = 0; c < 3; ++c) {
           G[g].c[0][c] += h0 * r0[c];
           G[g].c[1][c] += h0 * r1[c];
@@ -618,7 +633,7 @@ void GBPatch::evaluate_lanes(const Lane& u, const Lane& v, SurfaceJet* out, int 
     if (d < 3) continue;
     // alpha_i (A_i - B_{i-1}): the difference first, as evaluate_regular takes it, because the
     // two cancel near vertex i-1 where alpha_i's derivatives grow without bound.
-    SurfaceLanes A;
+    SurfaceLanes<V> A;
     to_uv(G[1], s[i], h[i], i == 0 ? A0 : A);
     if (i > 0) {
       for (int r = 0; r < 6; ++r)
@@ -639,9 +654,9 @@ void GBPatch::evaluate_lanes(const Lane& u, const Lane& v, SurfaceJet* out, int 
   }
 }
 
-PATCHLAB_LANES_CLONES
-void GBPatch::influence_lanes(std::size_t k, const Lane& u, const Lane& v, Jet* out,
-                              int count) const {
+template <class V>
+[[gnu::always_inline]] inline void GBPatch::influence_block(std::size_t k, const V& u, const V& v,
+                                                            Jet* out, int count) const {
   assert(k > 0);
   // The sides local() would ask for; see there.
   const int n = n_;
@@ -650,23 +665,23 @@ void GBPatch::influence_lanes(std::size_t k, const Lane& u, const Lane& v, Jet* 
   const uint32_t rotl = ((weighted << 1) | (weighted >> (n - 1))) & all;
   const uint32_t alphas = d_ >= 3 ? weighted | rotl : 0;
   const uint32_t rotr = ((alphas >> 1) | ((alphas & 1u) << (n - 1))) & all;
-  JetLanes s[kMaxSides], h[kMaxSides], alpha[kMaxSides];
+  JetLanesOf<V> s[kMaxSides], h[kMaxSides], alpha[kMaxSides];
   params_.evaluate_lanes(u, v, s, h, ribbons_of_[k] | alphas | rotr);
   for (int i = 0; i < n; ++i)
     if (alphas >> i & 1u) {
-      const JetLanes& prev = h[params_.wrap(i - 1)];
+      const JetLanesOf<V>& prev = h[i == 0 ? n - 1 : i - 1];
       alpha[i] = product(prev, reciprocal(sum(prev, h[i])));
     }
-  JetLanes w = constant_lanes(0);
+  JetLanesOf<V> w = constant_lanes<V>(0);
   for (const Occurrence& o : occurrences_[k]) {
-    JetLanes bj, bk;
-    const JetLanes &si = s[o.i], &hi = h[o.i];
-    Lane g, g1, g2;
+    JetLanesOf<V> bj, bk;
+    const JetLanesOf<V>&si = s[o.i], &hi = h[o.i];
+    V g, g1, g2;
     bernstein_d2(d_, o.j, si.f, g, g1, g2);
     bj = chain(si, g, g1, g2);
     bernstein_d2(d_, o.k, hi.f, g, g1, g2);
     bk = chain(hi, g, g1, g2);
-    JetLanes b = product(bj, bk);
+    JetLanesOf<V> b = product(bj, bk);
     switch (mu(o.j, o.k)) {
       case Mu::Half:
         b = scaled(b, 0.5);
@@ -675,10 +690,10 @@ void GBPatch::influence_lanes(std::size_t k, const Lane& u, const Lane& v, Jet* 
         b = product(b, alpha[o.i]);
         break;
       case Mu::Beta: {
-        const JetLanes& next = alpha[params_.wrap(o.i + 1)];
-        const Lane z{};  // Jet(1.0) - alpha, sign of zero included
-        const JetLanes beta{1.0 - next.f, z - next.fu,  z - next.fv,
-                            z - next.fuu, z - next.fuv, z - next.fvv};
+        const JetLanesOf<V>& next = alpha[o.i + 1 == n ? 0 : o.i + 1];
+        const V z{};  // Jet(1.0) - alpha, sign of zero included
+        const JetLanesOf<V> beta{1.0 - next.f, z - next.fu,  z - next.fv,
+                                 z - next.fuu, z - next.fuv, z - next.fvv};
         b = product(b, beta);
         break;
       }
@@ -690,12 +705,36 @@ void GBPatch::influence_lanes(std::size_t k, const Lane& u, const Lane& v, Jet* 
   for (int b = 0; b < count; ++b) out[b] = lane(w, b);
 }
 
-template <class Lanes, class AtVertex>
+PATCHLAB_LANES_CLONES
+void GBPatch::evaluate_lanes(const Lane& u, const Lane& v, SurfaceJet* out, int count) const {
+  evaluate_block(u, v, out, count);
+}
+
+PATCHLAB_LANES_WIDE
+void GBPatch::evaluate_lanes(const WideLane& u, const WideLane& v, SurfaceJet* out,
+                             int count) const {
+  evaluate_block(u, v, out, count);
+}
+
+PATCHLAB_LANES_CLONES
+void GBPatch::influence_lanes(std::size_t k, const Lane& u, const Lane& v, Jet* out,
+                              int count) const {
+  influence_block(k, u, v, out, count);
+}
+
+PATCHLAB_LANES_WIDE
+void GBPatch::influence_lanes(std::size_t k, const WideLane& u, const WideLane& v, Jet* out,
+                              int count) const {
+  influence_block(k, u, v, out, count);
+}
+
+template <class V, class Lanes, class AtVertex>
 void GBPatch::for_lane_blocks(std::span<const Vec2> xs, Lanes&& lanes, AtVertex&& at_vertex) const {
+  constexpr int width = sizeof(V) / sizeof(double);
   const Vec2 inside = domain_.interior_point();
-  for (std::size_t first = 0; first < xs.size(); first += kLanes) {
-    const int count = static_cast<int>(std::min<std::size_t>(kLanes, xs.size() - first));
-    Lane u = Lane{} + inside.x, v = Lane{} + inside.y;  // padding: any regular point
+  for (std::size_t first = 0; first < xs.size(); first += width) {
+    const int count = static_cast<int>(std::min<std::size_t>(width, xs.size() - first));
+    V u = V{} + inside.x, v = V{} + inside.y;  // padding: any regular point
     uint32_t at_vertices = 0;
     for (int b = 0; b < count; ++b) {
       const Vec2 x = xs[first + b];
@@ -713,12 +752,14 @@ void GBPatch::for_lane_blocks(std::span<const Vec2> xs, Lanes&& lanes, AtVertex&
 
 void GBPatch::evaluate_many(std::span<const Vec2> xs, std::span<SurfaceJet> out) const {
   assert(xs.size() == out.size());
-  for_lane_blocks(
-      xs,
-      [&](const Lane& u, const Lane& v, std::size_t first, int count) {
-        evaluate_lanes(u, v, &out[first], count);
-      },
-      [&](std::size_t p) { out[p] = evaluate(xs[p]); });
+  const auto lanes = [&](const auto& u, const auto& v, std::size_t first, int count) {
+    evaluate_lanes(u, v, &out[first], count);
+  };
+  const auto at_vertex = [&](std::size_t p) { out[p] = evaluate(xs[p]); };
+  if (wide_lanes())
+    for_lane_blocks<WideLane>(xs, lanes, at_vertex);
+  else
+    for_lane_blocks<Lane>(xs, lanes, at_vertex);
 }
 
 }  // namespace pl

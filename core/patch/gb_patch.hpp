@@ -77,17 +77,25 @@ class GBPatch final : public Patch {
   void local(Vec2 x, Local& out, uint32_t ribbons = ~0u, uint32_t weighted = ~0u) const;
   SurfaceJet evaluate_regular(Vec2 x) const;
   // evaluate_regular and influence_regular (k > 0) at kLanes points (u[b], v[b]) at once, one
-  // per SIMD lane, written to out[0..count).
+  // per SIMD lane, written to out[0..count); the WideLane forms only where wide_lanes() holds.
   void evaluate_lanes(const Lane& u, const Lane& v, SurfaceJet* out, int count) const;
+  void evaluate_lanes(const WideLane& u, const WideLane& v, SurfaceJet* out, int count) const;
   void influence_lanes(std::size_t k, const Lane& u, const Lane& v, Jet* out, int count) const;
+  void influence_lanes(std::size_t k, const WideLane& u, const WideLane& v, Jet* out,
+                       int count) const;
+  template <class V>
+  void evaluate_block(const V& u, const V& v, SurfaceJet* out, int count) const;
+  template <class V>
+  void influence_block(std::size_t k, const V& u, const V& v, Jet* out, int count) const;
   // Runs `lanes(u, v, first, count)` on blocks of xs (points at a domain vertex replaced by the
-  // interior point), then `at_vertex(p)` for each of those points.
-  template <class Lanes, class AtVertex>
+  // interior point), then `at_vertex(p)` for each of those points; V: the lane type.
+  template <class V, class Lanes, class AtVertex>
   void for_lane_blocks(std::span<const Vec2> xs, Lanes&& lanes, AtVertex&& at_vertex) const;
   void basis_regular(Vec2 x, std::span<Jet> out) const;
   Jet influence_regular(std::size_t k, Vec2 x) const;
   void basis_vertex(int v, std::span<Jet> out) const;  // exact limits at domain vertex v
   int vertex_at(Vec2 x) const;  // index of the domain vertex x sits on, or -1
+  double vertex_distance_ = 0;  // a lower bound of |vertex| - kVertexRadius
 
   int n_, d_, l_;
   ConvexPolygonDomain domain_;

@@ -60,6 +60,13 @@ void bench_gb(const Options& o) {
     figure("gb_full_eval_scalar_msamples_per_s", ev.sample_count() / (scalar_ms * 1e3),
            "Msamples/s");
     figure("gb_full_eval_speedup_over_scalar", scalar_ms / ms, "x");
+    if (cpu_has_wide_lanes()) {  // what a CPU with AVX2 but without AVX-512 runs
+      narrow_lanes_only = true;
+      const double narrow_ms = median_ms(o.quick ? 2 : 5, [&] { ev.evaluate_all(); });
+      narrow_lanes_only = false;
+      figure("gb_full_eval_narrow_lanes_msamples_per_s", ev.sample_count() / (narrow_ms * 1e3),
+             "Msamples/s");
+    }
   }
   // An inner point of layer 1: it moves most of the patch.
   const std::size_t k = patch->index(1, 2, 1);

@@ -25,7 +25,7 @@ std::vector<Vec2> probe_points(const ConvexPolygonDomain& dom, unsigned seed) {
       xs.push_back(dom.side_point(i, t));
     xs.push_back(dom.side_point(i, 0.7) + 1e-9 * (dom.interior_point() - dom.side_point(i, 0.7)));
   }
-  while (xs.size() % kLanes != 3 || xs.size() < 200) {
+  while (xs.size() % kWideLanes != 3 || xs.size() < 200) {
     // A random point of the triangle centre, vertex i, vertex i+1.
     const int i = static_cast<int>(r(rng) * n) % n;
     double a = r(rng), b = r(rng);
@@ -35,6 +35,15 @@ std::vector<Vec2> probe_points(const ConvexPolygonDomain& dom, unsigned seed) {
   }
   return xs;
 }
+
+// Runs the batched paths of both widths where the CPU has the wide ones.
+class GBBatch : public ::testing::TestWithParam<bool> {
+ protected:
+  void SetUp() override { narrow_lanes_only = GetParam(); }
+  void TearDown() override { narrow_lanes_only = false; }
+};
+INSTANTIATE_TEST_SUITE_P(Widths, GBBatch, ::testing::Values(false, true),
+                         [](const auto& info) { return info.param ? "narrow" : "wide"; });
 
 // |a - b| relative to the size of b's entry and to the patch size.
 double rel(double a, double b, double scale) {
@@ -50,7 +59,7 @@ double jet_rel(const SurfaceJet& a, const SurfaceJet& b, double scale) {
   return worst;
 }
 
-TEST(GBBatch, EvaluateManyEqualsEvaluate) {
+TEST_P(GBBatch, EvaluateManyEqualsEvaluate) {
   double worst = 0;
   for (int n : {3, 4, 5, 6, 7, 9, 16})
     for (int d = 1; d <= 8; ++d) {
@@ -84,7 +93,7 @@ double jet_rel(const Jet& a, const Jet& b) {
 // and away from them. Within ~0.05 of a vertex the corner weights' derivatives grow like
 // 1/distance^2 and the basis sums its terms in another order, so phi_k's second derivatives
 // agree only to ~1e-16/distance^2 there (the surface, a sum in which they cancel, does not).
-TEST(GBBatch, InfluenceColumnsArePhiOfTheBasis) {
+TEST_P(GBBatch, InfluenceColumnsArePhiOfTheBasis) {
   double worst_scalar = 0, worst_basis = 0;
   for (int n : {3, 4, 5, 6, 9})
     for (int d : {1, 2, 3, 4, 5, 6, 7}) {
@@ -117,7 +126,7 @@ TEST(GBBatch, InfluenceColumnsArePhiOfTheBasis) {
               worst_scalar, worst_basis);
 }
 
-TEST(GBBatch, ReferenceSamplesThroughEvaluateMany) {
+TEST_P(GBBatch, ReferenceSamplesThroughEvaluateMany) {
   PATCHLAB_REQUIRE_GB_REFERENCE();
   for (const std::string& name : test::gb_reference_models()) {
     const GBPatch patch = read_gbp(test::gb_reference_dir() / (name + ".gbp"));
@@ -136,7 +145,7 @@ TEST(GBBatch, ReferenceSamplesThroughEvaluateMany) {
   }
 }
 
-TEST(GBBatch, EvaluatorSamplesEqualEvaluate) {
+TEST_P(GBBatch, EvaluatorSamplesEqualEvaluate) {
   auto patch = std::make_shared<GBPatch>(test::random_gb(6, 5, 51));
   const auto tess =
       std::make_shared<const Tessellation>(ConvexPolygonDomain::regular(6).tessellate(60));
