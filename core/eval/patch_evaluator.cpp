@@ -128,10 +128,15 @@ std::size_t PatchEvaluator::move_control_point(std::size_t k, const Vec3& p) {
   // Dense columns update every sample (a zero weight adds zeros and recomputes the same geometry):
   // cheaper than testing each weight.
   const auto index = c.dense ? std::span<const uint32_t>() : std::span<const uint32_t>(c.index);
+  // Small chunks: their jets are still in L1 when the geometry reads them back.
+  constexpr std::ptrdiff_t chunk = 64;
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
-  for (std::ptrdiff_t b = 0; b < n; b += kChunk) {
-    const std::ptrdiff_t e = std::min(n, b + kChunk);
-    for (std::ptrdiff_t i = b; i < e; ++i) axpy(jets_[index.empty() ? i : index[i]], d, c.phi[i]);
+  for (std::ptrdiff_t b = 0; b < n; b += chunk) {
+    const std::ptrdiff_t e = std::min(n, b + chunk);
+    if (index.empty())
+      for (std::ptrdiff_t i = b; i < e; ++i) axpy(jets_[i], d, c.phi[i]);
+    else
+      for (std::ptrdiff_t i = b; i < e; ++i) axpy(jets_[index[i]], d, c.phi[i]);
     update_geometry(index, b, e - b);
   }
   // A point without influence here (an empty sparse column: e.g. a Catmull–Clark vertex far from
