@@ -524,10 +524,10 @@ void GBPatch::influence(std::size_t k, std::span<const Vec2> xs, std::span<Jet> 
     for_lane_blocks<Lane>(xs, lanes, at_vertex);
 }
 
-// ---- Batched evaluation: kLanes samples at once, one per SIMD lane.
-// ------------------------------- The same formulas (and operation order) as evaluate_regular /
-// influence_regular, with every per-sample number a Lane; only the Wachspress products are grouped
-// differently (PolygonParameters::evaluate_lanes) and the ISA clones may contract a*b+c into FMAs.
+// Batched evaluation: kLanes (or kWideLanes) samples at once, one per SIMD lane. The formulas and
+// their operation order are evaluate_regular's and influence_regular's (the core is built without
+// FMA contraction), except that the ribbons' terms are added into S in another order: influence
+// columns equal influence_at bit for bit, evaluate_many equals evaluate to rounding (tests).
 
 namespace {
 
