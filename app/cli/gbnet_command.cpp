@@ -3,7 +3,7 @@
 // (core/patch/gb_default_net.hpp) and/or elevates its degree K times (core/patch/gb_elevation.hpp).
 // A .gbp has no "unplaced" marker, so --defaults names what is kept: the boundary alone, or the
 // boundary and the cross-boundary ring; every other point, C_0 included, is recomputed.
-#include <stdexcept>
+#include <string>
 
 #include "app/cli/arguments.hpp"
 #include "app/cli/cli.hpp"
@@ -32,14 +32,17 @@ int run_gbnet(std::span<const std::string> args, std::ostream& out, std::ostream
   if (!defaults && elevate == 0) throw UsageError("gbnet needs --defaults and/or --elevate K");
 
   GBPatch patch = read_gbp(file);
+  // Checked before any work: gb_elevate takes degrees 2 .. kMaxDegree - 1, and the defaults keep
+  // the degree, so the file's degree decides.
+  const int d = patch.degree();
+  if (elevate > 0 && (d < 2 || d + elevate > GBPatch::kMaxDegree))
+    throw DataError(file, "",
+                    "degree " + std::to_string(d) + " cannot be elevated " +
+                        std::to_string(elevate) + " times (degrees 2.." +
+                        std::to_string(GBPatch::kMaxDegree - 1) + " elevate, up to degree " +
+                        std::to_string(GBPatch::kMaxDegree) + ")");
   if (defaults) patch = gb_default_net(patch, *defaults == "boundary" ? 1 : 2);
-  for (int e = 0; e < elevate; ++e) {
-    try {
-      patch = gb_elevate(patch);
-    } catch (const std::invalid_argument& x) {
-      throw DataError(file, "", x.what());
-    }
-  }
+  for (int e = 0; e < elevate; ++e) patch = gb_elevate(patch);
   write_gbp(*target, patch);
   out << "wrote " << *target << " (" << patch.sides() << " sides, degree " << patch.degree()
       << ")\n";

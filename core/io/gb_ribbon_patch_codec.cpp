@@ -20,7 +20,8 @@ std::unique_ptr<Patch> read_gb_ribbon_patch(const JsonNode& node) {
   std::vector<std::vector<std::vector<Vec3>>> ribbons;
   for (const JsonNode& r : rib) {
     r.allow_only({"degree", "layers", "points"});
-    const int d = r.at("degree").integer_in(1, 30), l = r.at("layers").integer_in(2, 15);
+    const int d = r.at("degree").integer_in(1, GBRibbonPatch::kMaxDegree),
+              l = r.at("layers").integer_in(2, GBRibbonPatch::kMaxLayers);
     const JsonNode pts = r.at("points");
     pts.items(static_cast<std::size_t>(l * (d + 1)));
     const std::vector<Vec3> p = pts.points();

@@ -1,8 +1,11 @@
 #include "core/patch/gb_elevation.hpp"
 
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <string>
+
+#include "core/patch/gb_default_net.hpp"
 
 namespace pl {
 
@@ -48,27 +51,20 @@ GBPatch gb_elevate(const GBPatch& patch) {
   for (int k = 0; k < shape.layers(); ++k)
     for (int i = 0; i < n; ++i)
       for (int j = k; j <= e - 1 - k; ++j) p[shape.index(i, j, k)] = elevated(patch, i, j, k);
-  Vec3 c(0);
-  const int m = e / 2;
-  if (e % 2 == 0) {
-    // Q^i_{m,m} is the mean of the old central 2x2 block P_{m-1..m, m-1..m} (all weights 1/4);
-    // those are the innermost corner points of ribbons i-1 .. i+2, so the mean over i is theirs.
-    for (int i = 0; i < n; ++i) c += patch.point(i, m - 1, m - 1);
-  } else {
-    for (int i = 0; i < n; ++i) c += p[shape.index(i, m, m)];
-  }
-  p[0] = c / double(n);
-  GBPatch out(n, e, std::move(p));
-  // C_0 through the old surface's centre point (CGF 2016's middle-point interpolation): it keeps
-  // the interior closest of the rules we measured (the formula above is the fallback where C_0
-  // has no weight at the centre, e.g. n = 4 with odd d+1, and is exact for n = 4, even d+1).
+  GBPatch out(n, e, std::move(p));  // C_0 still 0
+  // C_0 through the old surface's centre point (CGF 2016's middle-point interpolation). Where C_0
+  // has no weight at the centre (n = 4 with odd d+1: it has no weight anywhere) it takes the
+  // default-net position instead.
   std::vector<Jet> phi(out.size());
   out.basis({0, 0}, phi);
-  if (std::abs(phi[0].f) > kCentralWeightFloor) {
-    Vec3 rest = patch.evaluate({0, 0}).p;
-    for (std::size_t k = 1; k < out.size(); ++k) rest -= phi[k].f * out.control_point(k);
-    out.set_control_point(0, rest / phi[0].f);
+  if (std::abs(phi[0].f) <= kCentralWeightFloor) {
+    const auto placed = std::make_unique<bool[]>(out.size());
+    for (std::size_t k = 1; k < out.size(); ++k) placed[k] = true;
+    return gb_default_net(out, std::span<const bool>(placed.get(), out.size()));
   }
+  Vec3 rest = patch.evaluate({0, 0}).p;
+  for (std::size_t k = 1; k < out.size(); ++k) rest -= phi[k].f * out.control_point(k);
+  out.set_control_point(0, rest / phi[0].f);
   return out;
 }
 

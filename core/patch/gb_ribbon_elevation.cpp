@@ -22,6 +22,10 @@ GBRibbonPatch gb_ribbon_elevate(const GBRibbonPatch& patch, int side) {
   auto ribbons = patch.ribbons();
   auto& rows = ribbons[checked_side(patch, side)];
   const int d = patch.degree(side);
+  if (d >= GBRibbonPatch::kMaxDegree)
+    throw std::invalid_argument("ribbon elevation: side " + std::to_string(side) + " has degree " +
+                                std::to_string(d) + ", the limit is " +
+                                std::to_string(GBRibbonPatch::kMaxDegree));
   for (auto& row : rows) {
     std::vector<Vec3> up(d + 2);
     up[0] = row[0];
@@ -39,6 +43,10 @@ GBRibbonPatch gb_ribbon_add_layer(const GBRibbonPatch& patch, int side) {
   auto ribbons = patch.ribbons();
   auto rows = ribbons[checked_side(patch, side)];  // l >= 2 rows (the patch guarantees it)
   const int l = patch.layers(side), m = 2 * l - 1;
+  if (l >= GBRibbonPatch::kMaxLayers)
+    throw std::invalid_argument("ribbon elevation: side " + std::to_string(side) + " has " +
+                                std::to_string(l) + " layers, the limit is " +
+                                std::to_string(GBRibbonPatch::kMaxLayers));
   std::vector<Vec3> next(rows[l - 1].size());
   for (std::size_t j = 0; j < next.size(); ++j) next[j] = 2.0 * rows[l - 1][j] - rows[l - 2][j];
   rows.push_back(std::move(next));

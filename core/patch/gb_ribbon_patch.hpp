@@ -32,6 +32,10 @@ namespace pl {
 
 class GBRibbonPatch final : public Patch {
  public:
+  // The largest ribbon degree and layer count the gb-ribbons format accepts (the codec's limits;
+  // the elevation functions refuse to go beyond them).
+  static constexpr int kMaxDegree = 30, kMaxLayers = 15;
+
   // ribbons[i][k][j] = C^i_{j,k}. Throws std::invalid_argument for sizes that do not match the
   // domain, l < 2, degree < 1, ribbons that do not share their corner points, straight domain
   // corners, or a domain over which the mean value coordinates make the blend singular.

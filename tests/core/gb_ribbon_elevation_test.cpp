@@ -1,6 +1,6 @@
 // Edgewise elevation and layer addition of one ribbon of a GB patch with independent ribbons
 // (core/patch/gb_ribbon_elevation.hpp): the boundary curves, the surface along every side and its
-// tangent planes there are kept (against the original patch); the interior change is measured.
+// first derivatives there are kept (against the original patch); the interior change is measured.
 #include "core/patch/gb_ribbon_elevation.hpp"
 
 #include <gtest/gtest.h>
@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <random>
 
+#include "core/io/gb_ribbon_patch_codec.hpp"
+#include "gb_test_util.hpp"
 #include "test_util.hpp"
 
 namespace pl {
@@ -44,19 +46,13 @@ GBRibbonPatch wavy_patch(const std::vector<Vec2>& poly, unsigned seed) {
   return GBRibbonPatch(dom, ribbons);
 }
 
-double bbox_diagonal(const std::vector<Vec3>& points) {
-  Vec3 lo = points[0], hi = points[0];
-  for (const Vec3& p : points) lo = glm::min(lo, p), hi = glm::max(hi, p);
-  return glm::length(hi - lo);
-}
-
 struct Change {
-  double boundary = 0, side = 0, normal_deg = 0, interior = 0;
+  double boundary = 0, side = 0, d1 = 0, normal_deg = 0, interior = 0;
 };
 
 Change compare(const GBRibbonPatch& a, const GBRibbonPatch& b) {
   Change c;
-  const double scale = bbox_diagonal(a.control_points());
+  const double scale = test::bbox_diagonal(a.control_points());
   const auto ca = a.boundary_curves(), cb = b.boundary_curves();
   for (int i = 0; i < a.sides(); ++i)
     for (int t = 0; t <= 12; ++t)
@@ -74,6 +70,8 @@ Change compare(const GBRibbonPatch& a, const GBRibbonPatch& b) {
       continue;
     }
     c.side = std::max(c.side, moved);
+    // Su, Sv themselves (relative to the net's diagonal; the domains are about 2 across).
+    c.d1 = std::max({c.d1, test::max_abs(s.su - t.su) / scale, test::max_abs(s.sv - t.sv) / scale});
     const Vec3 ns = glm::cross(s.su, s.sv), nt = glm::cross(t.su, t.sv);
     c.normal_deg = std::max(
         c.normal_deg, std::atan2(glm::length(glm::cross(ns, nt)), glm::dot(ns, nt)) * 180 / M_PI);
@@ -81,7 +79,7 @@ Change compare(const GBRibbonPatch& a, const GBRibbonPatch& b) {
   return c;
 }
 
-TEST(GBRibbonElevation, KeepsTheBoundaryAndItsTangentPlanes) {
+TEST(GBRibbonElevation, KeepsTheBoundaryAndItsFirstDerivatives) {
   for (const char* name : {"pentagon", "L", "notch"}) {
     const GBRibbonPatch g = wavy_patch(polygon(name), 3);
     Change worst_e, worst_l;
@@ -98,18 +96,20 @@ TEST(GBRibbonElevation, KeepsTheBoundaryAndItsTangentPlanes) {
         const Change c = compare(g, *patch);
         EXPECT_LT(c.boundary, 1e-12) << name << " side " << side;
         EXPECT_LT(c.side, 1e-12) << name << " side " << side;
+        EXPECT_LT(c.d1, 1e-12) << name << " side " << side;
         EXPECT_LT(c.normal_deg, 1e-6) << name << " side " << side;
         worst->boundary = std::max(worst->boundary, c.boundary);
         worst->side = std::max(worst->side, c.side);
+        worst->d1 = std::max(worst->d1, c.d1);
         worst->normal_deg = std::max(worst->normal_deg, c.normal_deg);
         worst->interior = std::max(worst->interior, c.interior);
       }
     }
     for (const auto& [what, c] : {std::pair{"edgewise", worst_e}, std::pair{"layer   ", worst_l}})
       std::printf(
-          "[ ribbons   ] %-8s %s: boundary %.2g, sides %.2g (relative), normals %.2g deg; "
-          "interior moves by up to %.2g\n",
-          name, what, c.boundary, c.side, c.normal_deg, c.interior);
+          "[ ribbons   ] %-8s %s: boundary %.2g, sides %.2g, Su/Sv there %.2g (relative), "
+          "normals %.2g deg; interior moves by up to %.2g\n",
+          name, what, c.boundary, c.side, c.d1, c.normal_deg, c.interior);
   }
 }
 
@@ -128,13 +128,34 @@ TEST(GBRibbonElevation, AddedLayerContinuesARibbonLinearInH) {
     for (std::size_t j = 0; j < up[k].size(); ++j)
       EXPECT_LT(test::max_abs(up[k][j] - (ribbons[side][0][j] +
                                           double(k) * m / (m + 2) * Vec3(0.05, -0.1, 0.2))),
-                1e-15 * 10);
+                // Three products of weights <= 1 with coordinates <= ~2: a few ulps of 2.
+                2e-15);
 }
 
 TEST(GBRibbonElevation, RejectsAMissingSide) {
   const GBRibbonPatch g = wavy_patch(polygon("L"), 5);
   EXPECT_THROW(gb_ribbon_elevate(g, g.sides()), std::invalid_argument);
   EXPECT_THROW(gb_ribbon_add_layer(g, -1), std::invalid_argument);
+}
+
+TEST(GBRibbonElevation, StopsAtTheFormatsLimits) {
+  // Up to the limits every step works and the result is readable by the gb-ribbons codec;
+  // one more step throws instead of giving a patch that saves but does not read back.
+  GBRibbonPatch g = wavy_patch(polygon("pentagon"), 6);
+  while (g.degree(0) < GBRibbonPatch::kMaxDegree) g = gb_ribbon_elevate(g, 0);
+  while (g.layers(1) < GBRibbonPatch::kMaxLayers) g = gb_ribbon_add_layer(g, 1);
+  EXPECT_EQ(g.degree(0), 30);
+  EXPECT_EQ(g.layers(1), 15);
+  EXPECT_THROW(gb_ribbon_elevate(g, 0), std::invalid_argument);
+  EXPECT_THROW(gb_ribbon_add_layer(g, 1), std::invalid_argument);
+  // The other sides are not at their limits.
+  EXPECT_EQ(gb_ribbon_elevate(g, 1).degree(1), g.degree(1) + 1);
+  EXPECT_EQ(gb_ribbon_add_layer(g, 0).layers(0), g.layers(0) + 1);
+  // Round trip through the codec at the limits.
+  nlohmann::json j;
+  write_gb_ribbon_patch(g, j);
+  const auto back = read_gb_ribbon_patch(JsonNode(j, "mem.json"));
+  EXPECT_EQ(back->control_points(), g.control_points());
 }
 
 }  // namespace
