@@ -51,7 +51,11 @@ EGLContext make_context(EGLDisplay display, std::string& why) {
 
 }  // namespace
 
-EglContext::EglContext() {
+EglContext::EglContext()
+    : previous_display_(eglGetCurrentDisplay()),
+      previous_context_(eglGetCurrentContext()),
+      previous_draw_(eglGetCurrentSurface(EGL_DRAW)),
+      previous_read_(eglGetCurrentSurface(EGL_READ)) {
   auto get_platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
       eglGetProcAddress("eglGetPlatformDisplayEXT"));
   auto query_devices =
@@ -84,15 +88,30 @@ EglContext::EglContext() {
       platform_ = name;
       return;
     }
-    eglTerminate(display);
+    release(display);
   }
+  restore_previous();
   throw GlContextError("cannot create an OpenGL 3.3 core context with EGL; tried " + why);
 }
 
 EglContext::~EglContext() {
   eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   eglDestroyContext(display_, context_);
-  eglTerminate(display_);
+  release(display_);
+  restore_previous();
+}
+
+void EglContext::release(void* display) const {
+  // eglGetPlatformDisplay returns the same display each time and eglInitialize does not count:
+  // terminating the display of the context that was current before would destroy that one too.
+  if (display != previous_display_) eglTerminate(display);
+}
+
+void EglContext::restore_previous() const {
+  // Whoever had a context current (the editor's window, a test program's shared context) still
+  // has it once this one is gone.
+  if (previous_context_ != EGL_NO_CONTEXT)
+    eglMakeCurrent(previous_display_, previous_draw_, previous_read_, previous_context_);
 }
 
 }  // namespace pl

@@ -16,6 +16,8 @@ class EglContext {
  public:
   // Tries the Mesa surfaceless platform, then EGL devices, then EGL_DEFAULT_DISPLAY, and makes
   // the context current on this thread. Throws GlContextError saying what each attempt found.
+  // The context current before (if any) is current again after the destructor (or the throw),
+  // and its display is left initialised.
   EglContext();
   ~EglContext();
   EglContext(const EglContext&) = delete;
@@ -25,6 +27,10 @@ class EglContext {
   const std::string& platform() const { return platform_; }
 
  private:
+  void release(void* display) const;
+  void restore_previous() const;
+  // The context current when this one was made: EGLDisplay, EGLContext, EGLSurface draw, read.
+  void *previous_display_, *previous_context_, *previous_draw_, *previous_read_;
   void* display_ = nullptr;  // EGLDisplay, kept opaque so EGL headers stay out of this header
   void* context_ = nullptr;  // EGLContext
   std::string platform_;

@@ -15,6 +15,20 @@ void attribute(GLuint location, const gl::Buffer& buffer, GLint components) {
   glVertexAttribPointer(location, components, GL_FLOAT, GL_FALSE, 0, nullptr);
 }
 
+// A polyline as GL_LINES pairs.
+void add_polyline(const std::vector<Vec3>& l, std::vector<Vec3>& out) {
+  for (std::size_t i = 0; i + 1 < l.size(); ++i) {
+    out.push_back(l[i]);
+    out.push_back(l[i + 1]);
+  }
+}
+
+std::vector<Vec3> polylines(const std::vector<Polyline>& ls) {
+  std::vector<Vec3> out;
+  for (const Polyline& l : ls) add_polyline(l, out);
+  return out;
+}
+
 }  // namespace
 
 GpuSurface::GpuSurface(const SurfaceMesh& mesh) {
@@ -75,37 +89,60 @@ void GpuSurface::draw() const {
 GpuPrimitives::GpuPrimitives() {
   vao_.bind();
   positions_.data(GL_ARRAY_BUFFER, nullptr, 0, GL_DYNAMIC_DRAW);
-  tags_.data(GL_ARRAY_BUFFER, nullptr, 0, GL_DYNAMIC_DRAW);
-  offsets_.data(GL_ARRAY_BUFFER, nullptr, 0, GL_DYNAMIC_DRAW);
   attribute(kPosition, positions_, 3);
-  attribute(kTag, tags_, 1);
-  attribute(kOffset, offsets_, 3);
+  // Tags and offsets: arrays only once set() has some (the attribute is bound to its buffer then).
   glBindVertexArray(0);
 }
 
 void GpuPrimitives::set(const std::vector<Vec3>& vertices, const std::vector<float>& tags,
                         const std::vector<Vec3>& offsets) {
-  auto floats = [n = vertices.size()](const std::vector<Vec3>& v) {
-    std::vector<float> xyz(n * 3, 0.0f);
+  const std::size_t n = vertices.size();
+  auto floats = [&](const std::vector<Vec3>& v) {
+    scratch_.assign(n * 3, 0.0f);
     for (std::size_t i = 0; i < std::min(n, v.size()); ++i)
-      for (int k = 0; k < 3; ++k) xyz[3 * i + k] = static_cast<float>(v[i][k]);
-    return xyz;
+      for (int k = 0; k < 3; ++k) scratch_[3 * i + k] = static_cast<float>(v[i][k]);
   };
-  const std::vector<float> xyz = floats(vertices), offset_xyz = floats(offsets);
-  std::vector<float> t = tags;
-  t.resize(vertices.size(), 0.0f);
-  positions_.data(GL_ARRAY_BUFFER, xyz.data(), xyz.size() * sizeof(float), GL_DYNAMIC_DRAW);
-  tags_.data(GL_ARRAY_BUFFER, t.data(), t.size() * sizeof(float), GL_DYNAMIC_DRAW);
-  offsets_.data(GL_ARRAY_BUFFER, offset_xyz.data(), offset_xyz.size() * sizeof(float),
-                GL_DYNAMIC_DRAW);
-  count_ = static_cast<GLsizei>(vertices.size());
+  vao_.bind();
+  floats(vertices);
+  positions_.data(GL_ARRAY_BUFFER, scratch_.data(), scratch_.size() * sizeof(float),
+                  GL_DYNAMIC_DRAW);
+  has_tags_ = !tags.empty() && n > 0;
+  if (has_tags_) {
+    scratch_.assign(tags.begin(), tags.begin() + std::ptrdiff_t(std::min(n, tags.size())));
+    scratch_.resize(n, 0.0f);
+    tags_.data(GL_ARRAY_BUFFER, scratch_.data(), n * sizeof(float), GL_DYNAMIC_DRAW);
+    attribute(kTag, tags_, 1);
+  } else {
+    glDisableVertexAttribArray(kTag);
+  }
+  has_offsets_ = !offsets.empty() && n > 0;
+  if (has_offsets_) {
+    floats(offsets);
+    offsets_.data(GL_ARRAY_BUFFER, scratch_.data(), scratch_.size() * sizeof(float),
+                  GL_DYNAMIC_DRAW);
+    attribute(kOffset, offsets_, 3);
+  } else {
+    glDisableVertexAttribArray(kOffset);
+  }
+  glBindVertexArray(0);
+  count_ = static_cast<GLsizei>(n);
 }
 
-void GpuCombs::set(const std::vector<CurvatureComb>& combs) {
+void GpuCombs::set(std::span<const CurvatureComb* const> combs, std::size_t own, double max_tooth) {
   std::vector<Vec3> points, offsets, tip_points, tip_offsets;
-  for (const CurvatureComb& c : combs) {
+  const Vec3 zero(0);
+  for (std::size_t k = 0; k < combs.size(); ++k) {
+    if (k == own) {
+      own_teeth = static_cast<GLsizei>(points.size());
+      own_envelope = static_cast<GLsizei>(tip_points.size());
+    }
+    const CurvatureComb& c = *combs[k];
+    if (c.teeth.size() != c.points.size()) continue;  // a border without a comb
     const std::size_t n = c.points.size();
-    const Vec3 zero(0);
+    auto tooth = [&](std::size_t i) {
+      const double len = glm::length(c.teeth[i]);
+      return max_tooth > 0 && len > max_tooth ? c.teeth[i] * (max_tooth / len) : c.teeth[i];
+    };
     for (std::size_t i = 0; i < n; ++i) {
       // Teeth at every tooth_stride-th sample and always at the last one (the curve's end). A
       // zero tooth, and the envelope where both ends have one, would be drawn as a dot (the
@@ -113,25 +150,43 @@ void GpuCombs::set(const std::vector<CurvatureComb>& combs) {
       // or degenerate the envelope is the curve itself and nothing is drawn over it.
       if ((i % std::size_t(std::max(c.tooth_stride, 1)) == 0 || i + 1 == n) && c.teeth[i] != zero) {
         points.insert(points.end(), {c.points[i], c.points[i]});
-        offsets.insert(offsets.end(), {Vec3(0), c.teeth[i]});
+        offsets.insert(offsets.end(), {zero, tooth(i)});
       }
       if (i + 1 < n && (c.teeth[i] != zero || c.teeth[i + 1] != zero)) {
         tip_points.insert(tip_points.end(), {c.points[i], c.points[i + 1]});
-        tip_offsets.insert(tip_offsets.end(), {c.teeth[i], c.teeth[i + 1]});
+        tip_offsets.insert(tip_offsets.end(), {tooth(i), tooth(i + 1)});
       }
     }
+  }
+  if (own >= combs.size()) {
+    own_teeth = static_cast<GLsizei>(points.size());
+    own_envelope = static_cast<GLsizei>(tip_points.size());
   }
   teeth.set(points, {}, offsets);
   envelope.set(tip_points, {}, tip_offsets);
 }
 
-void GpuPrimitives::draw(GLenum mode) const {
-  if (count_ == 0) return;
+void GpuPrimitives::draw(GLenum mode, GLsizei count) const {
+  const GLsizei n = count < 0 ? count_ : std::min(count, count_);
+  if (n == 0) return;
   glBindVertexArray(vao_.id());
-  glDrawArrays(mode, 0, count_);
+  // The current value of a disabled attribute is context state, not the vertex array's: set it
+  // for every draw.
+  if (!has_tags_) glVertexAttrib1f(kTag, 0.0f);
+  if (!has_offsets_) glVertexAttrib3f(kOffset, 0.0f, 0.0f, 0.0f);
+  glDrawArrays(mode, 0, n);
 }
 
 void GpuScene::update(const DrawScene& scene) {
+  update_geometry(scene);
+  borders_.set(polylines(scene.borders), {});
+  std::vector<const CurvatureComb*> network, borders;
+  for (const CurvatureComb& c : scene.network_combs) network.push_back(&c);
+  for (const CurvatureComb& c : scene.border_combs) borders.push_back(&c);
+  set_combs(network, borders, scene.border_on_network);
+}
+
+void GpuScene::update_geometry(const DrawScene& scene) {
   if (surfaces_.size() != scene.surfaces.size()) {
     surfaces_.clear();
     for (const SurfaceMesh& m : scene.surfaces) surfaces_.emplace_back(m);
@@ -150,30 +205,42 @@ void GpuScene::update(const DrawScene& scene) {
   std::vector<float> kinds;
   for (ControlPointKind k : scene.net.kinds) kinds.push_back(static_cast<float>(k));
   net_points_.set(scene.net.points, kinds);
-  auto polylines = [](const std::vector<Polyline>& ls) {
-    std::vector<Vec3> out;
-    for (const Polyline& l : ls)
-      for (std::size_t i = 0; i + 1 < l.size(); ++i) {
-        out.push_back(l[i]);
-        out.push_back(l[i + 1]);
-      }
-    return out;
-  };
   curves_.set(polylines(scene.network_curves), {});
-  borders_.set(polylines(scene.borders), {});
-  network_combs_.set(scene.network_combs);
-  border_combs_.set(scene.border_combs);
-  std::vector<CurvatureComb> own;
-  for (std::size_t i = 0; i < scene.border_combs.size(); ++i)
-    if (i >= scene.border_on_network.size() || !scene.border_on_network[i])
-      own.push_back(scene.border_combs[i]);
-  patch_border_combs_.set(own);
-  std::vector<CurvatureComb> all = scene.network_combs;
-  all.insert(all.end(), scene.border_combs.begin(), scene.border_combs.end());
   const Box box = scene.bounds();
-  const double diagonal = box.empty() ? 0.0 : glm::length(box.hi - box.lo);
-  comb_scale_ = automatic_comb_scale(all, diagonal);
-  comb_reference_length_ = kDefaultCombFraction * diagonal;
+  diagonal_ = box.empty() ? 0.0 : glm::length(box.hi - box.lo);
+}
+
+void GpuScene::update_curves(std::span<const CurvatureComb* const> network_combs,
+                             std::span<const CurvatureComb* const> borders,
+                             const std::vector<bool>& border_on_network) {
+  std::vector<Vec3> lines;
+  for (const CurvatureComb* c : borders) add_polyline(c->points, lines);
+  borders_.set(lines, {});
+  set_combs(network_combs, borders, border_on_network);
+}
+
+void GpuScene::set_combs(std::span<const CurvatureComb* const> network_combs,
+                         std::span<const CurvatureComb* const> borders,
+                         const std::vector<bool>& border_on_network) {
+  // The border combs that are not network edges' first, so that they can be drawn alone.
+  std::vector<const CurvatureComb*> ordered;
+  ordered.reserve(borders.size());
+  for (int pass = 0; pass < 2; ++pass)
+    for (std::size_t i = 0; i < borders.size(); ++i) {
+      const bool on_network = i < border_on_network.size() && border_on_network[i];
+      if (on_network == (pass == 1)) ordered.push_back(borders[i]);
+    }
+  std::size_t own = 0;
+  for (std::size_t i = 0; i < borders.size(); ++i)
+    own += !(i < border_on_network.size() && border_on_network[i]);
+  std::vector<const CurvatureComb*> all(network_combs.begin(), network_combs.end());
+  all.insert(all.end(), borders.begin(), borders.end());
+  comb_scale_ = automatic_comb_scale_of(all, diagonal_);
+  comb_reference_length_ = kDefaultCombFraction * diagonal_;
+  const double max_tooth =
+      comb_scale_ > 0 ? kCombToothClamp * comb_reference_length_ / comb_scale_ : 0.0;
+  network_combs_.set(network_combs, network_combs.size(), max_tooth);
+  border_combs_.set(ordered, own, max_tooth);
 }
 
 }  // namespace pl

@@ -3,6 +3,7 @@
 // changed one with the same topology is updated in place (the drag path).
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "render/draw_scene.hpp"
@@ -31,35 +32,57 @@ class GpuSurface {
 
 // Line segments (GL_LINES pairs) or points with a per-vertex float tag (the point kind) and a
 // per-vertex offset (comb teeth: the shader draws the vertex at position + scale * offset, so a
-// new comb scale needs no upload). Missing tags and offsets are zero.
+// new comb scale needs no upload). Missing tags and offsets are not uploaded: the attribute's
+// array is disabled and the shader reads the constant 0 set at draw time.
 class GpuPrimitives {
  public:
   GpuPrimitives();
   void set(const std::vector<Vec3>& vertices, const std::vector<float>& tags,
            const std::vector<Vec3>& offsets = {});
-  void draw(GLenum mode) const;
+  // The first `count` vertices (all when negative).
+  void draw(GLenum mode, GLsizei count = -1) const;
   bool empty() const { return count_ == 0; }
 
  private:
   gl::VertexArray vao_;
   gl::Buffer positions_, tags_, offsets_;
   GLsizei count_ = 0;
+  bool has_tags_ = false, has_offsets_ = false;
+  std::vector<float> scratch_;  // reused conversion buffer
 };
 
 // A set of curvature combs as two line lists: the teeth (curve point to tip) and the envelope
-// through the tips, both with their offsets for the shader.
+// through the tips, both with their offsets for the shader. The first `own` combs of set() are
+// also drawable alone (own_teeth / own_envelope vertices): a scene's border combs are uploaded
+// once, those that are not network edges' first.
 struct GpuCombs {
   GpuPrimitives teeth, envelope;
-  void set(const std::vector<CurvatureComb>& combs);
+  GLsizei own_teeth = 0, own_envelope = 0;
+  // Teeth longer than max_tooth (> 0; 0: no limit) are shortened to it before the conversion to
+  // float: a near-cusp tooth can exceed what a float (or the shader's length()) can hold.
+  void set(std::span<const CurvatureComb* const> combs, std::size_t own, double max_tooth);
 };
+
+// Teeth are shortened on upload to this many times the reference curvature (the one that gets
+// the reference length): far beyond the renderer's cap (3 reference lengths) even for a panel
+// drawn with a 1000 times smaller common scale, and far below float overflow.
+inline constexpr double kCombToothClamp = 1e4;
 
 class GpuScene {
  public:
   GpuScene() = default;
   explicit GpuScene(const DrawScene& scene) { update(scene); }
   // Uploads what changed since the last call (surfaces by revision; overlays always, they are
-  // small).
+  // small): update_geometry, the borders and the combs.
   void update(const DrawScene& scene);
+  // Surfaces, control net and network curves only: the borders and combs stay as they are.
+  void update_geometry(const DrawScene& scene);
+  // Borders (the points of `borders`) and combs held outside a DrawScene (the editor keeps them
+  // once for both densities of a view); a border comb without teeth is a border without a comb.
+  // Pointers are read during the call only.
+  void update_curves(std::span<const CurvatureComb* const> network_combs,
+                     std::span<const CurvatureComb* const> borders,
+                     const std::vector<bool>& border_on_network);
   // The drag path: re-uploads one surface's attributes.
   void update_surface(std::size_t i, const SurfaceMesh& mesh) { surfaces_.at(i).update(mesh); }
 
@@ -69,9 +92,9 @@ class GpuScene {
   const GpuPrimitives& network_curves() const { return curves_; }
   const GpuPrimitives& borders() const { return borders_; }
   const GpuCombs& network_combs() const { return network_combs_; }
+  // Every border comb; those that are not also network edges' (DrawScene::border_on_network)
+  // are its first own_teeth / own_envelope vertices.
   const GpuCombs& border_combs() const { return border_combs_; }
-  // The border combs that are not also network edges' (DrawScene::border_on_network).
-  const GpuCombs& patch_border_combs() const { return patch_border_combs_; }
   // The automatic comb scale of this scene (tooth length per unit curvature, over the combs of
   // network curves and borders together so that coincident curves get equal teeth; 0 if every
   // curve is straight) and the tooth length it gives the reference curvature.
@@ -79,10 +102,13 @@ class GpuScene {
   double comb_reference_length() const { return comb_reference_length_; }
 
  private:
+  void set_combs(std::span<const CurvatureComb* const> network_combs,
+                 std::span<const CurvatureComb* const> borders,
+                 const std::vector<bool>& border_on_network);
   std::vector<GpuSurface> surfaces_;
   GpuPrimitives net_lines_, net_points_, curves_, borders_;
-  GpuCombs network_combs_, border_combs_, patch_border_combs_;
-  double comb_scale_ = 0, comb_reference_length_ = 0;
+  GpuCombs network_combs_, border_combs_;
+  double diagonal_ = 0, comb_scale_ = 0, comb_reference_length_ = 0;
 };
 
 }  // namespace pl

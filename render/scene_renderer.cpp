@@ -97,10 +97,8 @@ void SceneRenderer::draw(const GpuScene& scene, const Camera& camera,
         settings.comb_length.value_or(scene.comb_scale()) * settings.comb_scale;
     const double cap = kCombCap * scene.comb_reference_length() * settings.comb_scale;
     // A network face's border comb is its edge's: drawn once, with the network's.
-    if (borders)
-      draw_combs(network ? scene.patch_border_combs() : scene.border_combs(), vp, v,
-                 float(per_curvature), float(cap));
-    if (network) draw_combs(scene.network_combs(), vp, v, float(per_curvature), float(cap));
+    if (borders) draw_combs(scene.border_combs(), network, vp, v, float(per_curvature), float(cap));
+    if (network) draw_combs(scene.network_combs(), false, vp, v, float(per_curvature), float(cap));
   }
   if (settings.control_net) {
     draw_lines(scene.net_lines(), vp, v, {0.20f, 0.22f, 0.26f, 0.9f}, 1.3f * s, true);
@@ -139,8 +137,8 @@ void SceneRenderer::draw_backdrop(const Viewport& v) const {
   glBindVertexArray(0);
 }
 
-void SceneRenderer::draw_combs(const GpuCombs& combs, const glm::mat4& vp, const Viewport& v,
-                               float offset_scale, float offset_max) const {
+void SceneRenderer::draw_combs(const GpuCombs& combs, bool own_only, const glm::mat4& vp,
+                               const Viewport& v, float offset_scale, float offset_max) const {
   if (!(offset_scale > 0)) return;  // every curve straight: no tooth has length
   const float s = static_cast<float>(v.pixel_scale);
   // A colour of their own (none of the curves', the point kinds' or the colour map's), teeth
@@ -148,15 +146,15 @@ void SceneRenderer::draw_combs(const GpuCombs& combs, const glm::mat4& vp, const
   // what the eye follows. Parts behind a surface show faintly, as the control net does, since
   // teeth often pierce the surface they describe.
   draw_lines(combs.teeth, vp, v, {0.00f, 0.55f, 0.50f, 0.55f}, 1.0f * s, true, offset_scale,
-             offset_max);
+             offset_max, own_only ? combs.own_teeth : -1);
   draw_lines(combs.envelope, vp, v, {0.00f, 0.45f, 0.40f, 0.95f}, 1.8f * s, true, offset_scale,
-             offset_max);
+             offset_max, own_only ? combs.own_envelope : -1);
 }
 
 void SceneRenderer::draw_lines(const GpuPrimitives& lines, const glm::mat4& vp, const Viewport& v,
                                const float (&color)[4], float width, bool show_hidden,
-                               float offset_scale, float offset_max) const {
-  if (lines.empty()) return;
+                               float offset_scale, float offset_max, GLsizei count) const {
+  if (lines.empty() || count == 0) return;
   lines_.use();
   glUniformMatrix4fv(lines_.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
   glUniform1f(lines_.uniform("u_offset_scale"), offset_scale);
@@ -168,11 +166,11 @@ void SceneRenderer::draw_lines(const GpuPrimitives& lines, const glm::mat4& vp, 
   if (show_hidden) {
     glDepthFunc(GL_GREATER);
     glUniform4f(lines_.uniform("u_color"), color[0], color[1], color[2], color[3] * kHiddenAlpha);
-    lines.draw(GL_LINES);
+    lines.draw(GL_LINES, count);
     glDepthFunc(GL_LEQUAL);
   }
   glUniform4f(lines_.uniform("u_color"), color[0], color[1], color[2], color[3]);
-  lines.draw(GL_LINES);
+  lines.draw(GL_LINES, count);
   glDepthMask(GL_TRUE);
 }
 

@@ -30,11 +30,13 @@ class SceneRenderer {
 
  private:
   // offset_scale and offset_max place comb vertices (see line.vert.glsl); 0 for plain lines.
+  // count: the first vertices only (all when negative).
   void draw_lines(const GpuPrimitives& lines, const glm::mat4& vp, const Viewport& v,
                   const float (&color)[4], float width, bool show_hidden, float offset_scale = 0.0f,
-                  float offset_max = 0.0f) const;
-  void draw_combs(const GpuCombs& combs, const glm::mat4& vp, const Viewport& v, float offset_scale,
-                  float offset_max) const;
+                  float offset_max = 0.0f, GLsizei count = -1) const;
+  // own_only: the combs' first own_teeth / own_envelope vertices (GpuCombs).
+  void draw_combs(const GpuCombs& combs, bool own_only, const glm::mat4& vp, const Viewport& v,
+                  float offset_scale, float offset_max) const;
   gl::Program surface_, lines_, points_, backdrop_;
   gl::VertexArray empty_vao_;  // the backdrop has no attributes, but core profiles need a VAO
   gl::Texture color_map_;

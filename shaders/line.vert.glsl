@@ -1,7 +1,9 @@
 #version 330 core
 // Overlay lines and points: positions in model space, a per-vertex tag (point kind) and offset
 // (comb teeth: the vertex is drawn at position + u_offset_scale * offset, so a new comb scale
-// costs a uniform, not an upload; offsets are zero everywhere else).
+// costs a uniform, not an upload; other lines and points have no offset array and read the
+// constant 0). Teeth are shortened on the CPU before the float conversion (GpuCombs), so
+// length(o) stays finite.
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in float a_tag;
 layout(location = 2) in vec3 a_offset;

@@ -7,15 +7,6 @@ namespace pl {
 
 namespace {
 
-// Samples per curve for overlay polylines: smooth at 4096 px for the cubic edges we draw.
-constexpr int kCurveSamples = 64;
-
-Polyline sample(const BezierCurve& c) {
-  Polyline l;
-  for (int i = 0; i <= kCurveSamples; ++i) l.push_back(c.point(double(i) / kCurveSamples));
-  return l;
-}
-
 uint32_t add_point(ControlNet& net, const Vec3& p, ControlPointKind kind) {
   net.points.push_back(p);
   net.kinds.push_back(kind);
@@ -37,16 +28,42 @@ void add_bezier_net(ControlNet& net, const BezierPatch& b) {
 
 }  // namespace
 
+std::vector<Polyline> network_polylines(const Network& network) {
+  std::vector<Polyline> lines;
+  for (std::size_t e = 0; e < network.edges.size(); ++e) {
+    const BezierCurve c = network.edge_curve(static_cast<int>(e));
+    Polyline& l = lines.emplace_back();
+    for (int i = 0; i <= kCurveSegments; ++i) l.push_back(c.point(double(i) / kCurveSegments));
+  }
+  return lines;
+}
+
+std::vector<CurvatureComb> network_combs(const Network& network, int comb_teeth) {
+  std::vector<CurvatureComb> combs;
+  for (std::size_t e = 0; e < network.edges.size(); ++e)
+    combs.push_back(curvature_comb(network.edge_curve(static_cast<int>(e)), comb_teeth));
+  return combs;
+}
+
+std::vector<CurvatureComb> surface_borders(const SceneSurface& surface, int comb_teeth) {
+  const Patch& patch = surface.evaluator->patch();
+  if (comb_teeth > 0) return side_combs(patch, comb_teeth);
+  std::vector<CurvatureComb> borders(patch.domain().side_count());
+  for (int side = 0; side < int(borders.size()); ++side)
+    borders[side].points = side_polyline(patch, side, kCurveSegments);
+  return borders;
+}
+
 DrawScene build_draw_scene(const Scene& scene, const SceneSurfaces& surfaces, int comb_teeth) {
   DrawScene d;
   for (const SceneSurface& s : surfaces.surfaces) {
     d.surfaces.push_back(make_surface_mesh(*s.evaluator, s.name));
-    // Borders from the surface itself (boundary_curves() only approximates some types' sides),
-    // with their combs from the surface jet along each side.
-    for (CurvatureComb& c : side_combs(s.evaluator->patch(), comb_teeth)) {
+    for (CurvatureComb& c : surface_borders(s, comb_teeth)) {
       d.borders.push_back(c.points);
-      d.border_combs.push_back(std::move(c));
-      d.border_on_network.push_back(s.face >= 0);
+      if (comb_teeth > 0) {
+        d.border_combs.push_back(std::move(c));
+        d.border_on_network.push_back(s.face >= 0);
+      }
     }
   }
   if (scene.network) {
@@ -62,10 +79,9 @@ DrawScene build_draw_scene(const Scene& scene, const SceneSurfaces& surfaces, in
       d.net.segments.push_back({vertex_ids.at(edge.v[0]), h1});
       d.net.segments.push_back({h1, h2});
       d.net.segments.push_back({h2, vertex_ids.at(edge.v[1])});
-      const BezierCurve curve = net.edge_curve(static_cast<int>(e));
-      d.network_curves.push_back(sample(curve));
-      d.network_combs.push_back(curvature_comb(curve, comb_teeth));
     }
+    d.network_curves = network_polylines(net);
+    if (comb_teeth > 0) d.network_combs = network_combs(net, comb_teeth);
   }
   for (const SceneSurface& s : surfaces.surfaces) {
     const Patch& p = s.evaluator->patch();

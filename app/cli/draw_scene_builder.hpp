@@ -1,7 +1,7 @@
 // Turns an evaluated scene into the renderer's plain arrays (render/draw_scene.hpp): meshes with
 // exact normals and curvatures, the control net with point kinds, network curves and patch
 // borders with their curvature combs (comb_teeth tooth intervals per curve). The app does this so
-// the renderer never sees patch classes.
+// the renderer never sees patch classes. The curve helpers below serve the editor too.
 #pragma once
 
 #include "core/eval/scene_surfaces.hpp"
@@ -11,7 +11,22 @@
 
 namespace pl {
 
+// comb_teeth 0: no combs (borders without teeth, no network combs).
 DrawScene build_draw_scene(const Scene& scene, const SceneSurfaces& surfaces,
                            int comb_teeth = DisplaySettings().comb_teeth);
+
+// Segments of the polyline drawn for a network curve or a border without a comb: smooth at
+// 4096 px for the cubic edges we draw, and as many as a comb's envelope has at least.
+inline constexpr int kCurveSegments = kMinCombEnvelopeSegments;
+
+// Every network edge curve as a polyline of kCurveSegments segments.
+std::vector<Polyline> network_polylines(const Network& network);
+// Every network edge's curvature comb (comb_teeth >= 1).
+std::vector<CurvatureComb> network_combs(const Network& network, int comb_teeth);
+
+// One per domain side of the surface, from the surface jet along the side (exact for every patch
+// type; boundary_curves() only approximates some types' sides): the points are the border drawn,
+// the teeth its comb. comb_teeth 0: the points alone (kCurveSegments segments), no teeth.
+std::vector<CurvatureComb> surface_borders(const SceneSurface& surface, int comb_teeth);
 
 }  // namespace pl

@@ -97,17 +97,20 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
   if (compare && !scene.network)
     throw DataError(file, "", "--compare needs a scene with a curve network");
   TessellationCache cache;
+  // No comb work unless combs are drawn.
+  const int teeth = settings.combs ? settings.comb_teeth : 0;
   std::vector<DrawScene> draws;
   std::vector<std::string> labels;
   if (compare) {
     for (const auto& [s, label] : {std::pair{FaceScheme::Gregory, "Gregory"},
                                    std::pair{FaceScheme::GB, "Generalized Bezier"}}) {
       const SceneSurfaces surfaces = evaluate_scene(scene, density, s, cache, file);
-      draws.push_back(build_draw_scene(scene, surfaces));
+      draws.push_back(build_draw_scene(scene, surfaces, teeth));
       labels.push_back(label);
     }
   } else {
-    draws.push_back(build_draw_scene(scene, evaluate_scene(scene, density, scheme, cache, file)));
+    draws.push_back(
+        build_draw_scene(scene, evaluate_scene(scene, density, scheme, cache, file), teeth));
     labels.emplace_back();
   }
 

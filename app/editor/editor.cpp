@@ -72,14 +72,15 @@ void Editor::rebuild_views() {
   compare_views_[1].reset();
   view_error_.clear();
   try {
+    const bool combs = prefs_.display.combs;
     const int teeth = prefs_.display.comb_teeth;
     main_view_ = std::make_unique<EvaluatedView>(doc_, std::nullopt, prefs_.coarse_density,
-                                                 prefs_.fine_density, teeth);
+                                                 prefs_.fine_density, combs, teeth);
     if (compare_ && doc_.scene().network) {
       compare_views_[0] = std::make_unique<EvaluatedView>(
-          doc_, FaceScheme::Gregory, prefs_.coarse_density, prefs_.fine_density, teeth);
+          doc_, FaceScheme::Gregory, prefs_.coarse_density, prefs_.fine_density, combs, teeth);
       compare_views_[1] = std::make_unique<EvaluatedView>(
-          doc_, FaceScheme::GB, prefs_.coarse_density, prefs_.fine_density, teeth);
+          doc_, FaceScheme::GB, prefs_.coarse_density, prefs_.fine_density, combs, teeth);
     }
   } catch (const DataError& e) {
     view_error_ = e.what();
@@ -91,10 +92,19 @@ void Editor::follow_document() {
   const auto t0 = Clock::now();
   bool changed = false;
   try {
-    if (main_view_) changed |= main_view_->follow(doc_);
+    // Combs turned on or off, or a new tooth count: the views resample their curves in follow()
+    // (nothing is re-evaluated; no comb work while combs are off).
+    const DisplaySettings& d = prefs_.display;
+    if (main_view_) {
+      main_view_->configure_combs(d.combs, d.comb_teeth);
+      changed |= main_view_->follow(doc_);
+    }
     if (compare_)
       for (auto& v : compare_views_)
-        if (v) changed |= v->follow(doc_);
+        if (v) {
+          v->configure_combs(d.combs, d.comb_teeth);
+          changed |= v->follow(doc_);
+        }
   } catch (const DataError& e) {
     status_message_ = e.what();
     status_time_ = Clock::now();

@@ -171,9 +171,8 @@ void Editor::draw_display_section() {
       ImGui::SetTooltip(
           "Multiplies the automatic tooth length (the 90th-percentile curvature\n"
           "gets 6 %% of the scene diagonal; teeth are capped at 3 times that)");
+    // A new count resamples the combs only (the views follow it each frame, no re-evaluation).
     ImGui::SliderInt("Comb teeth", &d.comb_teeth, kMinCombTeeth, kMaxCombTeeth);
-    // Teeth are sampled when the views are built, like the density: rebuild on release.
-    if (ImGui::IsItemDeactivatedAfterEdit()) rebuild_views();
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Teeth per curve");
   }
   int densities[2] = {prefs_.coarse_density, prefs_.fine_density};

@@ -1,8 +1,9 @@
 #include "core/curve/curvature_comb.hpp"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace pl {
 
@@ -38,7 +39,9 @@ Vec3 curvature_tooth(const CurvePoint& c) {
 }
 
 CurvatureComb curvature_comb(const std::function<CurvePoint(double)>& curve, int teeth) {
-  assert(teeth >= 1);
+  if (teeth < 1)
+    throw std::invalid_argument("curvature_comb: teeth must be at least 1, got " +
+                                std::to_string(teeth));
   CurvatureComb comb;
   comb.tooth_stride = (kMinCombEnvelopeSegments + teeth - 1) / teeth;
   const int n = teeth * comb.tooth_stride;
@@ -59,9 +62,17 @@ CurvatureComb curvature_comb(const BezierCurve& curve, int teeth) {
 
 double automatic_comb_scale(std::span<const CurvatureComb> combs, double diagonal,
                             double fraction) {
+  std::vector<const CurvatureComb*> all;
+  all.reserve(combs.size());
+  for (const CurvatureComb& c : combs) all.push_back(&c);
+  return automatic_comb_scale_of(all, diagonal, fraction);
+}
+
+double automatic_comb_scale_of(std::span<const CurvatureComb* const> combs, double diagonal,
+                               double fraction) {
   std::vector<double> kappa;
-  for (const CurvatureComb& c : combs)
-    for (const Vec3& t : c.teeth)
+  for (const CurvatureComb* c : combs)
+    for (const Vec3& t : c->teeth)
       if (const double k = glm::length(t); k * diagonal * kStraightRadius > 1) kappa.push_back(k);
   if (kappa.empty() || !(diagonal > 0)) return 0;
   const std::size_t at =

@@ -36,7 +36,8 @@ struct CurvatureComb {
 constexpr int kMinCombEnvelopeSegments = 64;
 
 // Samples `curve` (position and derivatives in t over [0, 1]) with `teeth` tooth intervals
-// (teeth + 1 teeth at t = k / teeth), refined between teeth for the envelope. teeth >= 1.
+// (teeth + 1 teeth at t = k / teeth), refined between teeth for the envelope. Throws
+// std::invalid_argument unless teeth >= 1.
 CurvatureComb curvature_comb(const std::function<CurvePoint(double)>& curve, int teeth);
 CurvatureComb curvature_comb(const BezierCurve& curve, int teeth);
 
@@ -53,5 +54,8 @@ inline constexpr double kDefaultCombFraction = 0.06;
 // has length).
 double automatic_comb_scale(std::span<const CurvatureComb> combs, double diagonal,
                             double fraction = kDefaultCombFraction);
+// The same over combs held elsewhere (no copies of their arrays).
+double automatic_comb_scale_of(std::span<const CurvatureComb* const> combs, double diagonal,
+                               double fraction = kDefaultCombFraction);
 
 }  // namespace pl

@@ -1,5 +1,8 @@
 #include "core/patch/side_curve.hpp"
 
+#include <stdexcept>
+#include <string>
+
 namespace pl {
 
 namespace {
@@ -44,6 +47,21 @@ CurvePoint side_curve_point(const Patch& patch, int side, double t) {
 
 CurvatureComb side_comb(const Patch& patch, int side, int teeth) {
   return curvature_comb([&](double t) { return side_curve_point(patch, side, t); }, teeth);
+}
+
+std::vector<Vec3> side_polyline(const Patch& patch, int side, int segments) {
+  if (segments < 1)
+    throw std::invalid_argument("side_polyline: segments must be at least 1, got " +
+                                std::to_string(segments));
+  std::vector<Vec2> xs(std::size_t(segments) + 1);
+  for (int i = 0; i <= segments; ++i)
+    xs[i] = patch.domain().side_point(side, double(i) / segments);  // ends exactly 0 and 1
+  std::vector<SurfaceJet> jets(xs.size());
+  patch.evaluate_many(xs, jets);
+  std::vector<Vec3> points;
+  points.reserve(jets.size());
+  for (const SurfaceJet& j : jets) points.push_back(j.p);
+  return points;
 }
 
 std::vector<CurvatureComb> side_combs(const Patch& patch, int teeth) {

@@ -18,5 +18,9 @@ CurvePoint side_curve_point(const Patch& patch, int side, double t);
 CurvatureComb side_comb(const Patch& patch, int side, int teeth);
 // One per domain side, in side order: what a border overlay draws (its points are the border).
 std::vector<CurvatureComb> side_combs(const Patch& patch, int teeth);
+// The points alone, at t = k / segments (the points of a comb with as many samples, without its
+// end extrapolation and teeth): a border drawn without a comb. Throws std::invalid_argument
+// unless segments >= 1.
+std::vector<Vec3> side_polyline(const Patch& patch, int side, int segments);
 
 }  // namespace pl

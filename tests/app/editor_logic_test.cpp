@@ -5,16 +5,19 @@
 #include <cmath>
 #include <fstream>
 
+#include "app/cli/draw_scene_builder.hpp"
 #include "app/editor/logic/editor_invocation.hpp"
 #include "app/editor/logic/editor_paths.hpp"
 #include "app/editor/logic/file_listing.hpp"
 #include "app/editor/logic/grid_scene.hpp"
+#include "app/editor/logic/live_curves.hpp"
 #include "app/editor/logic/live_surfaces.hpp"
 #include "app/editor/logic/point_names.hpp"
 #include "app/editor/logic/preferences.hpp"
 #include "app/editor/logic/surface_difference.hpp"
 #include "app/editor/logic/surface_probe.hpp"
 #include "cli_test_util.hpp"
+#include "core/patch/side_curve.hpp"
 
 namespace pl {
 namespace {
@@ -168,20 +171,89 @@ TEST(EditorLiveSurfaces, IncrementalSyncMatchesAFreshEvaluation) {
   }
   EXPECT_EQ(live.points().find(PointRef::vertex(0)), 0);
   EXPECT_EQ(live.points().positions[0], Vec3(-0.1, -0.05, 0.2));
-  // Border combs are recomputed for the changed surfaces only; all must match a fresh build.
-  const DrawScene &a = live.draw(), &b = fresh.draw();
-  ASSERT_EQ(a.border_combs.size(), b.border_combs.size());
-  ASSERT_EQ(a.borders.size(), a.border_combs.size());
-  ASSERT_EQ(a.network_combs.size(), a.network_curves.size());
-  // Every border here is a network face's side: its comb is drawn with the network's.
-  ASSERT_EQ(a.border_on_network, std::vector<bool>(a.border_combs.size(), true));
-  for (std::size_t c = 0; c < a.border_combs.size(); ++c) {
-    ASSERT_EQ(a.border_combs[c].points.size(), b.border_combs[c].points.size());
-    for (std::size_t i = 0; i < a.border_combs[c].points.size(); ++i) {
-      EXPECT_LT(glm::length(a.border_combs[c].points[i] - b.border_combs[c].points[i]), 1e-12);
-      EXPECT_LT(glm::length(a.border_combs[c].teeth[i] - b.border_combs[c].teeth[i]), 1e-9);
-    }
+}
+
+// Borders and combs (LiveCurves) of live surfaces against those of a fresh evaluation.
+void expect_same_curves(const LiveCurves& a, const LiveCurves& b) {
+  ASSERT_EQ(a.borders().size(), b.borders().size());
+  EXPECT_EQ(a.on_network(), b.on_network());
+  std::vector<const CurvatureComb*> ca = a.border_refs(), cb = b.border_refs();
+  const std::vector<const CurvatureComb*> na = a.network_comb_refs(), nb = b.network_comb_refs();
+  ASSERT_EQ(ca.size(), cb.size());
+  ASSERT_EQ(na.size(), nb.size());
+  ca.insert(ca.end(), na.begin(), na.end());
+  cb.insert(cb.end(), nb.begin(), nb.end());
+  for (std::size_t c = 0; c < ca.size(); ++c) {
+    // Exact: the curves come from the patches, whose control points a sync sets to the scene's
+    // bit for bit (only the tessellated samples are updated by axpy), so both sides evaluate the
+    // same patches at the same parameters.
+    EXPECT_EQ(ca[c]->points, cb[c]->points) << c;
+    EXPECT_EQ(ca[c]->teeth, cb[c]->teeth) << c;
+    EXPECT_EQ(ca[c]->tooth_stride, cb[c]->tooth_stride) << c;
   }
+}
+
+TEST(EditorLiveCurves, FollowIncrementalSyncsAndResampleWithoutReevaluating) {
+  Scene s = make_grid_network_scene(2, 2);
+  LiveSurfaces live(s, 8, std::nullopt, "grid", 0);
+  LiveCurves curves(false, 12);
+  EXPECT_TRUE(curves.follow(s, live.surfaces(), 0, 0, {}));
+  EXPECT_FALSE(curves.follow(s, live.surfaces(), 0, 0, {}));  // up to date: nothing to do
+  // Combs off: bare borders (points, no teeth), no network combs.
+  ASSERT_EQ(curves.borders().size(), 4u);
+  for (const CurvatureComb* c : curves.border_refs()) {
+    EXPECT_EQ(c->points.size(), std::size_t(kCurveSegments) + 1);
+    EXPECT_TRUE(c->teeth.empty());
+  }
+  EXPECT_TRUE(curves.network_combs().empty());
+  // Every border here is a network face's side: its comb is drawn with the network's.
+  EXPECT_EQ(curves.border_on_network(), std::vector<bool>(16, true));
+
+  // Combs on: resampled from the same surfaces, no sync.
+  curves.configure(true, 12);
+  const uint64_t serial = curves.serial();
+  EXPECT_TRUE(curves.follow(s, live.surfaces(), 0, 0, {}));
+  EXPECT_GT(curves.serial(), serial);
+  EXPECT_EQ(curves.network_combs().size(), s.network->edges.size());
+  for (const CurvatureComb* c : curves.border_refs()) EXPECT_EQ(c->teeth.size(), c->points.size());
+
+  // An edit: only the changed surfaces' curves are recomputed, and all match a fresh build.
+  set_point_position(s, PointRef::vertex(0), Vec3(-0.1, -0.05, 0.2));
+  const std::vector<int> changed = live.sync(s, 1);
+  ASSERT_FALSE(changed.empty());
+  EXPECT_TRUE(curves.follow(s, live.surfaces(), 0, 1, changed));
+  LiveSurfaces fresh(s, 8, std::nullopt, "grid", 1);
+  LiveCurves fresh_curves(true, 12);
+  fresh_curves.follow(s, fresh.surfaces(), 1, 1, {});
+  expect_same_curves(curves, fresh_curves);
+  // The curves do not depend on the density: a coarse evaluation of the same revision shares them.
+  LiveSurfaces coarse(s, 3, std::nullopt, "grid", 1);
+  EXPECT_FALSE(curves.follow(s, coarse.surfaces(), 0, 1, changed));
+
+  // A sync from a revision the curves were not at (e.g. after an undo the other density saw):
+  // everything is resampled, not just `changed`.
+  set_point_position(s, PointRef::vertex(8), Vec3(2.1, 2.05, -0.3));
+  live.sync(s, 2);
+  set_point_position(s, PointRef::vertex(0), Vec3(0, 0, 0));
+  const std::vector<int> last = live.sync(s, 3);
+  EXPECT_TRUE(curves.follow(s, live.surfaces(), 2, 3, last));  // the curves are at 1, not 2
+  LiveSurfaces fresh3(s, 8, std::nullopt, "grid", 3);
+  LiveCurves fresh3_curves(true, 12);
+  fresh3_curves.follow(s, fresh3.surfaces(), 3, 3, {});
+  expect_same_curves(curves, fresh3_curves);
+
+  // A new tooth count resamples every comb from the surfaces as they are.
+  curves.configure(true, 5);
+  EXPECT_TRUE(curves.follow(s, live.surfaces(), 3, 3, {}));
+  const CurvatureComb expected = side_comb(live.surfaces().surfaces[2].evaluator->patch(), 1, 5);
+  EXPECT_EQ(curves.borders()[2][1].points, expected.points);
+  EXPECT_EQ(curves.borders()[2][1].teeth, expected.teeth);
+  EXPECT_THROW(curves.configure(true, 0), std::invalid_argument);
+  // Combs off again: no teeth anywhere.
+  curves.configure(false, 5);
+  EXPECT_TRUE(curves.follow(s, live.surfaces(), 3, 3, {}));
+  for (const CurvatureComb* c : curves.border_refs()) EXPECT_TRUE(c->teeth.empty());
+  EXPECT_TRUE(curves.network_combs().empty());
 }
 
 }  // namespace

@@ -148,6 +148,28 @@ TEST(CurvatureComb, BezierPatchSidesMatchTheirBoundaryCurves) {
   }
   std::printf("bicubic sides: max deviation from the boundary Bezier's comb %.3g\n", worst);
   EXPECT_LT(worst, 1e-12);
+  // A border without a comb: the same points (same parameters, same evaluation), no teeth.
+  for (int s = 0; s < 4; ++s) {
+    const std::vector<Vec3> line = side_polyline(patch, s, 64);
+    ASSERT_EQ(line.size(), 65u);
+    for (std::size_t i = 0; i < line.size(); ++i)
+      EXPECT_LT(max_abs(line[i] - sides[s].point(double(i) / 64)), 1e-12) << s << " " << i;
+  }
+  EXPECT_THROW(side_polyline(patch, 0, 0), std::invalid_argument);
+}
+
+TEST(CurvatureComb, ToothCountBelowOneIsRejected) {
+  // Not an assert: a release build would divide by zero computing the tooth stride.
+  const BezierCurve arc({{0, 0, 0}, {1, 1, 0}, {2, 0, 0}});
+  for (int teeth : {0, -1, -64}) {
+    EXPECT_THROW(curvature_comb(arc, teeth), std::invalid_argument) << teeth;
+    EXPECT_THROW(side_comb(BezierPatch(1, 1, test::random_points(4, 3)), 0, teeth),
+                 std::invalid_argument)
+        << teeth;
+  }
+  const CurvatureComb one = curvature_comb(arc, 1);  // the smallest count: 2 teeth, 64 segments
+  EXPECT_EQ(one.points.size(), std::size_t(kMinCombEnvelopeSegments) + 1);
+  EXPECT_EQ(one.tooth_stride, kMinCombEnvelopeSegments);
 }
 
 // Gregory and GB faces of network scenes (convex, concave, closed) interpolate the network's cubic
@@ -190,6 +212,7 @@ TEST(CurvatureComb, NetworkFaceSidesMatchTheirEdgesCornersIncluded) {
 
 // Plain GB patches (the reference models, 3 to 7 sides): corner weights are 0/0 there too.
 TEST(CurvatureComb, GBReferencePatchSidesMatchTheirBoundaryCurves) {
+  PATCHLAB_REQUIRE_GB_REFERENCE();
   for (const std::string& name : test::gb_reference_models()) {
     const GBPatch patch = read_gbp(test::gb_reference_dir() / (name + ".gbp"));
     const std::vector<BezierCurve> sides = patch.boundary_curves();

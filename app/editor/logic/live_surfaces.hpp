@@ -1,7 +1,8 @@
 // One live evaluation of the document's scene at one density and scheme, with the plain arrays
 // the renderer draws. sync() follows an edit incrementally (SceneEvaluation moves only changed
 // control points) and refreshes only the meshes of surfaces that changed, so the GPU re-uploads
-// only those (their revision numbers change, the others' do not). GUI-free.
+// only those (their revision numbers change, the others' do not). Borders and curvature combs
+// do not depend on the density: LiveCurves keeps them once for every density. GUI-free.
 #pragma once
 
 #include <optional>
@@ -10,20 +11,18 @@
 
 #include "app/editor/logic/scene_points.hpp"
 #include "core/eval/scene_evaluation.hpp"
-#include "render/display_settings.hpp"
 
 namespace pl {
 
 class LiveSurfaces {
  public:
-  // Throws DataError like evaluate_scene.
-  // comb_teeth: tooth intervals per curve of the curvature combs in draw().
+  // Throws DataError like evaluate_scene. `revision`: the document revision `scene` is.
   LiveSurfaces(const Scene& scene, int density, std::optional<FaceScheme> scheme,
-               const std::string& source, int comb_teeth = DisplaySettings().comb_teeth);
+               const std::string& source, uint64_t revision = 0);
 
   // Brings the evaluation up to `scene` (revision `revision` of the document). Returns the
-  // indices of surfaces whose meshes changed. Throws DataError when the edited network cannot be
-  // filled; the previous state is kept.
+  // indices of surfaces whose meshes (and patches) changed. Throws DataError when the edited
+  // network cannot be filled; the previous state is kept.
   std::vector<int> sync(const Scene& scene, uint64_t revision);
 
   uint64_t synced_revision() const { return revision_; }
@@ -38,10 +37,6 @@ class LiveSurfaces {
   SceneEvaluation evaluation_;
   DrawScene draw_;
   ScenePoints points_;
-  int comb_teeth_;
-  // Per surface: its border combs, recomputed only for surfaces a sync changed (each is a few
-  // hundred patch evaluations, as much as a coarse drag re-evaluation of a small patch).
-  std::vector<std::vector<CurvatureComb>> border_combs_;
   uint64_t revision_ = 0;
   double last_sync_ms_ = 0;
 };

@@ -1,20 +1,11 @@
 #include "app/editor/logic/scene_points.hpp"
 
+#include "app/cli/draw_scene_builder.hpp"
 #include "core/patch/bezier_patch.hpp"
-#include "core/patch/side_curve.hpp"
 
 namespace pl {
 
 namespace {
-
-// Samples per curve for overlay polylines: smooth at window sizes for cubic edges.
-constexpr int kCurveSamples = 48;
-
-Polyline sample(const BezierCurve& c) {
-  Polyline l;
-  for (int i = 0; i <= kCurveSamples; ++i) l.push_back(c.point(double(i) / kCurveSamples));
-  return l;
-}
 
 uint32_t add(ScenePoints& s, const Vec3& p, ControlPointKind kind, std::optional<PointRef> ref) {
   s.positions.push_back(p);
@@ -89,37 +80,12 @@ ScenePoints collect_scene_points(const Scene& scene, const SceneSurfaces& surfac
   return s;
 }
 
-void fill_overlays(const Scene& scene, const ScenePoints& points, int comb_teeth, DrawScene& draw) {
+void fill_overlays(const Scene& scene, const ScenePoints& points, DrawScene& draw) {
   draw.net.points = points.positions;
   draw.net.kinds = points.kinds;
   draw.net.segments = points.segments;
   draw.network_curves.clear();
-  draw.network_combs.clear();
-  if (scene.network)
-    for (std::size_t e = 0; e < scene.network->edges.size(); ++e) {
-      const BezierCurve curve = scene.network->edge_curve(static_cast<int>(e));
-      draw.network_curves.push_back(sample(curve));
-      draw.network_combs.push_back(curvature_comb(curve, comb_teeth));
-    }
-}
-
-std::vector<CurvatureComb> border_combs(const SceneSurface& surface, int comb_teeth) {
-  // From the surface jet along each side: exact for every patch type, and the border drawn is
-  // the surface's own edge (boundary_curves() only approximates some types' sides).
-  return side_combs(surface.evaluator->patch(), comb_teeth);
-}
-
-void fill_borders(const SceneSurfaces& surfaces,
-                  const std::vector<std::vector<CurvatureComb>>& combs, DrawScene& draw) {
-  draw.borders.clear();
-  draw.border_combs.clear();
-  draw.border_on_network.clear();
-  for (std::size_t s = 0; s < combs.size(); ++s)
-    for (const CurvatureComb& c : combs[s]) {
-      draw.borders.push_back(c.points);
-      draw.border_combs.push_back(c);
-      draw.border_on_network.push_back(surfaces.surfaces.at(s).face >= 0);
-    }
+  if (scene.network) draw.network_curves = network_polylines(*scene.network);
 }
 
 }  // namespace pl

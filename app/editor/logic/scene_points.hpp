@@ -25,15 +25,8 @@ struct ScenePoints {
 
 ScenePoints collect_scene_points(const Scene& scene, const SceneSurfaces& surfaces);
 
-// The overlays of a DrawScene from the points: the net, and the network curves with their combs
-// (comb_teeth tooth intervals per curve). Borders come from border_combs.
-void fill_overlays(const Scene& scene, const ScenePoints& points, int comb_teeth, DrawScene& draw);
-
-// The border combs of one surface, one per domain side; their points are the border polylines.
-std::vector<CurvatureComb> border_combs(const SceneSurface& surface, int comb_teeth);
-
-// Sets draw.borders, border_combs and border_on_network from per-surface border combs.
-void fill_borders(const SceneSurfaces& surfaces,
-                  const std::vector<std::vector<CurvatureComb>>& combs, DrawScene& draw);
+// The overlays of a DrawScene from the points: the net and the network curves. Borders and
+// curvature combs are LiveCurves'.
+void fill_overlays(const Scene& scene, const ScenePoints& points, DrawScene& draw);
 
 }  // namespace pl

@@ -1,0 +1,73 @@
+#include "app/editor/logic/live_curves.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include "app/cli/draw_scene_builder.hpp"
+
+namespace pl {
+
+LiveCurves::LiveCurves(bool combs, int teeth) : combs_(combs), teeth_(teeth) {
+  if (teeth < 1)
+    throw std::invalid_argument("LiveCurves: teeth must be at least 1, got " +
+                                std::to_string(teeth));
+}
+
+void LiveCurves::configure(bool combs, int teeth) {
+  if (teeth < 1)
+    throw std::invalid_argument("LiveCurves: teeth must be at least 1, got " +
+                                std::to_string(teeth));
+  if (combs == combs_ && (!combs || teeth == teeth_)) {
+    teeth_ = teeth;  // without combs the count changes nothing computed
+    return;
+  }
+  combs_ = combs;
+  teeth_ = teeth;
+  stale_ = true;
+}
+
+bool LiveCurves::follow(const Scene& scene, const SceneSurfaces& surfaces, uint64_t from,
+                        uint64_t to, const std::vector<int>& changed) {
+  const std::size_t n = surfaces.surfaces.size();
+  const int teeth = combs_ ? teeth_ : 0;
+  if (!stale_ && revision_ == to) return false;  // e.g. the fine view catching up after a drag
+  if (stale_ || revision_ != from || borders_.size() != n) {
+    borders_.clear();
+    on_network_.clear();
+    for (const SceneSurface& s : surfaces.surfaces) {
+      borders_.push_back(surface_borders(s, teeth));
+      on_network_.push_back(s.face >= 0);
+    }
+  } else {
+    for (int i : changed) borders_.at(i) = surface_borders(surfaces.surfaces[i], teeth);
+  }
+  // Network combs: a few hundred Bezier evaluations, recomputed whole.
+  network_combs_.clear();
+  if (combs_ && scene.network) network_combs_ = pl::network_combs(*scene.network, teeth_);
+  stale_ = false;
+  revision_ = to;
+  ++serial_;
+  return true;
+}
+
+std::vector<const CurvatureComb*> LiveCurves::network_comb_refs() const {
+  std::vector<const CurvatureComb*> refs;
+  for (const CurvatureComb& c : network_combs_) refs.push_back(&c);
+  return refs;
+}
+
+std::vector<const CurvatureComb*> LiveCurves::border_refs() const {
+  std::vector<const CurvatureComb*> refs;
+  for (const auto& surface : borders_)
+    for (const CurvatureComb& c : surface) refs.push_back(&c);
+  return refs;
+}
+
+std::vector<bool> LiveCurves::border_on_network() const {
+  std::vector<bool> flags;
+  for (std::size_t s = 0; s < borders_.size(); ++s)
+    flags.insert(flags.end(), borders_[s].size(), on_network_[s]);
+  return flags;
+}
+
+}  // namespace pl
