@@ -65,8 +65,14 @@ void PatchEvaluator::evaluate_all() {
     patch_->evaluate_many(std::span(xs).subspan(b, e - b), std::span(jets_).subspan(b, e - b));
     update_geometry({}, b, e - b);
   }
-  columns_.clear();  // columns depend only on the basis, but a full rebuild starts clean
+  // Columns depend only on the basis, but a full rebuild starts clean.
+  for (Column& c : columns_) keep_storage(c);
+  columns_.clear();
   ++revision_;
+}
+
+void PatchEvaluator::keep_storage(Column& c) {
+  if (c.dense && c.count == jets_.size()) spare_ = std::move(c.phi);
 }
 
 const PatchEvaluator::Column& PatchEvaluator::column(std::size_t k) {
@@ -76,12 +82,19 @@ const PatchEvaluator::Column& PatchEvaluator::column(std::size_t k) {
       c.last_use = use_clock_;
       return c;
     }
+  if (columns_.size() >= kMaxColumns) {  // the least recently used one goes
+    auto oldest =
+        std::min_element(columns_.begin(), columns_.end(),
+                         [](const Column& a, const Column& b) { return a.last_use < b.last_use; });
+    keep_storage(*oldest);
+    columns_.erase(oldest);
+  }
   Column c;
   c.k = k;
   c.last_use = use_clock_;
   const auto& xs = tessellation_->points;
   c.count = xs.size();
-  c.phi = allocate_jets(c.count);
+  c.phi = spare_ ? std::move(spare_) : allocate_jets(c.count);
   // Evaluate in parallel chunks: influence() is const and thread-safe.
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(xs.size());
   constexpr std::ptrdiff_t chunk = 4096;
@@ -103,13 +116,6 @@ const PatchEvaluator::Column& PatchEvaluator::column(std::size_t k) {
       }
     c.phi = std::move(packed);
     c.count = nonzero;
-  }
-  if (columns_.size() >= kMaxColumns) {
-    auto oldest =
-        std::min_element(columns_.begin(), columns_.end(),
-                         [](const Column& a, const Column& b) { return a.last_use < b.last_use; });
-    *oldest = std::move(c);
-    return *oldest;
   }
   columns_.push_back(std::move(c));
   return columns_.back();
@@ -148,6 +154,7 @@ std::size_t PatchEvaluator::move_control_point(std::size_t k, const Vec3& p) {
 std::size_t PatchEvaluator::influence_bytes() const {
   std::size_t b = 0;
   for (const Column& c : columns_) b += c.count * sizeof(Jet) + c.index.capacity() * 4;
+  if (spare_) b += jets_.size() * sizeof(Jet);
   return b;
 }
 
