@@ -38,22 +38,37 @@ Vec3 curvature_tooth(const CurvePoint& c) {
   return tooth;
 }
 
-CurvatureComb curvature_comb(const std::function<CurvePoint(double)>& curve, int teeth) {
+int curvature_comb_intervals(int teeth) {
   if (teeth < 1)
     throw std::invalid_argument("curvature_comb: teeth must be at least 1, got " +
                                 std::to_string(teeth));
+  return teeth * ((kMinCombEnvelopeSegments + teeth - 1) / teeth);
+}
+
+CurvatureComb curvature_comb_of_samples(std::span<const CurvePoint> samples, int teeth) {
+  const int n = curvature_comb_intervals(teeth);
+  if (samples.size() != std::size_t(n) + 1)
+    throw std::invalid_argument("curvature_comb: " + std::to_string(samples.size()) +
+                                " samples for " + std::to_string(teeth) + " teeth, expected " +
+                                std::to_string(n + 1));
   CurvatureComb comb;
-  comb.tooth_stride = (kMinCombEnvelopeSegments + teeth - 1) / teeth;
-  const int n = teeth * comb.tooth_stride;
-  comb.points.reserve(n + 1);
-  comb.teeth.reserve(n + 1);
-  for (int i = 0; i <= n; ++i) {
-    // k / n rather than k * (1 / n): the ends are exactly 0 and 1, where curves are joined.
-    const CurvePoint c = curve(double(i) / n);
+  comb.tooth_stride = n / teeth;
+  comb.points.reserve(samples.size());
+  comb.teeth.reserve(samples.size());
+  for (const CurvePoint& c : samples) {
     comb.points.push_back(c.p);
     comb.teeth.push_back(curvature_tooth(c));
   }
   return comb;
+}
+
+CurvatureComb curvature_comb(const std::function<CurvePoint(double)>& curve, int teeth) {
+  const int n = curvature_comb_intervals(teeth);
+  std::vector<CurvePoint> samples;
+  samples.reserve(n + 1);
+  // k / n rather than k * (1 / n): the ends are exactly 0 and 1, where curves are joined.
+  for (int i = 0; i <= n; ++i) samples.push_back(curve(double(i) / n));
+  return curvature_comb_of_samples(samples, teeth);
 }
 
 CurvatureComb curvature_comb(const BezierCurve& curve, int teeth) {

@@ -40,6 +40,12 @@ constexpr int kMinCombEnvelopeSegments = 64;
 // std::invalid_argument unless teeth >= 1.
 CurvatureComb curvature_comb(const std::function<CurvePoint(double)>& curve, int teeth);
 CurvatureComb curvature_comb(const BezierCurve& curve, int teeth);
+// The number n of sample intervals of a comb with `teeth` tooth intervals (samples at t = i / n,
+// i = 0..n). Throws std::invalid_argument unless teeth >= 1.
+int curvature_comb_intervals(int teeth);
+// The comb of samples already taken at t = i / n (n = curvature_comb_intervals(teeth); e.g. in
+// one batch). Throws std::invalid_argument for another sample count.
+CurvatureComb curvature_comb_of_samples(std::span<const CurvePoint> samples, int teeth);
 
 // The automatic scale: the tooth of the reference curvature, the kCombPercentile quantile of the
 // non-zero curvatures over all combs, is kDefaultCombFraction of the scene's bounding box

@@ -15,10 +15,14 @@ namespace {
 constexpr double kEndStep = 1e-4;
 constexpr double kCornerTolerance = 1e-6;
 
-CurvePoint along_side(const Patch& patch, Vec2 d, Vec2 x) {
-  const SurfaceJet s = patch.evaluate(x);
+// The curve's derivatives along the domain direction d from the surface jet.
+CurvePoint along(const SurfaceJet& s, Vec2 d) {
   return {s.p, d.x * s.su + d.y * s.sv,
           d.x * d.x * s.suu + 2 * d.x * d.y * s.suv + d.y * d.y * s.svv};
+}
+
+CurvePoint along_side(const Patch& patch, Vec2 d, Vec2 x) {
+  return along(patch.evaluate(x), d);
 }
 
 }  // namespace
@@ -46,7 +50,22 @@ CurvePoint side_curve_point(const Patch& patch, int side, double t) {
 }
 
 CurvatureComb side_comb(const Patch& patch, int side, int teeth) {
-  return curvature_comb([&](double t) { return side_curve_point(patch, side, t); }, teeth);
+  const int n = curvature_comb_intervals(teeth);
+  const Domain& domain = patch.domain();
+  const Vec2 d = domain.side_point(side, 1.0) - domain.side_point(side, 0.0);
+  // The inner samples in one evaluate_many (batched for GB patches, several samples per SIMD
+  // block); the two ends one by one, with their corner limit (side_curve_point).
+  std::vector<Vec2> xs;
+  xs.reserve(n > 1 ? n - 1 : 0);
+  for (int i = 1; i < n; ++i) xs.push_back(domain.side_point(side, double(i) / n));
+  std::vector<SurfaceJet> jets(xs.size());
+  patch.evaluate_many(xs, jets);
+  std::vector<CurvePoint> samples;
+  samples.reserve(n + 1);
+  samples.push_back(side_curve_point(patch, side, 0.0));
+  for (const SurfaceJet& j : jets) samples.push_back(along(j, d));
+  samples.push_back(side_curve_point(patch, side, 1.0));
+  return curvature_comb_of_samples(samples, teeth);
 }
 
 std::vector<Vec3> side_polyline(const Patch& patch, int side, int segments) {

@@ -170,6 +170,11 @@ TEST(CurvatureComb, ToothCountBelowOneIsRejected) {
   const CurvatureComb one = curvature_comb(arc, 1);  // the smallest count: 2 teeth, 64 segments
   EXPECT_EQ(one.points.size(), std::size_t(kMinCombEnvelopeSegments) + 1);
   EXPECT_EQ(one.tooth_stride, kMinCombEnvelopeSegments);
+  // Samples taken elsewhere (side_comb's batch) must be as many as the tooth count asks for.
+  EXPECT_EQ(curvature_comb_intervals(32), 64);
+  EXPECT_EQ(curvature_comb_intervals(100), 100);
+  EXPECT_THROW(curvature_comb_of_samples(std::vector<CurvePoint>(64), 32), std::invalid_argument);
+  EXPECT_THROW(curvature_comb_intervals(0), std::invalid_argument);
 }
 
 // Gregory and GB faces of network scenes (convex, concave, closed) interpolate the network's cubic
