@@ -205,6 +205,15 @@ void GBRibbonPatch::check_parameterisation() const {
   // Mean value coordinates can be negative behind reflex vertices; where lambda_i-1 + lambda_i
   // reaches 0 inside the domain, s_i has a pole. Reject such domains instead of producing
   // non-finite samples (checked on a tessellation's interior points).
+  // Inside a convex polygon they are all positive (Floater 2003), so only a domain with a reflex
+  // corner needs the sampled check; it cost ~3 ms per face, paid on every re-fill of a drag.
+  const auto& v = domain_.vertices();
+  const int count = static_cast<int>(v.size());
+  bool convex = true;
+  for (int i = 0; i < count && convex; ++i)
+    convex = cross(domain_.vertex(i) - domain_.vertex(i - 1),
+                   domain_.vertex(i + 1) - domain_.vertex(i)) > 0;
+  if (convex) return;
   const Tessellation t = domain_.tessellate(24);
   std::vector<bool> boundary(t.points.size(), false);
   for (const auto& side : t.sides)
