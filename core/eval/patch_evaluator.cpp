@@ -82,7 +82,7 @@ const PatchEvaluator::Column& PatchEvaluator::column(std::size_t k) {
       c.last_use = use_clock_;
       return c;
     }
-  if (columns_.size() >= kMaxColumns) {  // the least recently used one goes
+  if (columns_.size() >= max_columns()) {  // the least recently used one goes
     auto oldest =
         std::min_element(columns_.begin(), columns_.end(),
                          [](const Column& a, const Column& b) { return a.last_use < b.last_use; });
@@ -149,6 +149,51 @@ std::size_t PatchEvaluator::move_control_point(std::size_t k, const Vec3& p) {
   // this face) changed no sample, so the renderer has nothing to re-upload.
   if (n > 0) ++revision_;
   return static_cast<std::size_t>(n);
+}
+
+std::size_t PatchEvaluator::max_columns() const {
+  const std::size_t column_bytes = std::max<std::size_t>(1, jets_.size() * sizeof(Jet));
+  return std::max(kMaxColumns, column_budget_ / column_bytes);
+}
+
+std::size_t PatchEvaluator::move_control_points(std::span<const PointMove> moves) {
+  if (moves.size() == 1) return move_control_point(moves[0].k, moves[0].p);
+  if (moves.empty()) return 0;
+  if (moves.size() > max_columns()) {
+    for (const PointMove& m : moves) patch_->set_control_point(m.k, m.p);
+    evaluate_all();
+    return jets_.size();
+  }
+  // Build (or touch) every column first: the batch is the most recently used, so none of its
+  // columns is evicted by another's build, and the pointers taken afterwards stay valid.
+  for (const PointMove& m : moves) column(m.k);
+  std::vector<const Column*> cols;
+  std::vector<Vec3> deltas;
+  bool all_dense = true;
+  for (const PointMove& m : moves) {
+    const Column* c = &*std::find_if(columns_.begin(), columns_.end(),
+                                     [&](const Column& col) { return col.k == m.k; });
+    all_dense = all_dense && c->dense;
+    cols.push_back(c);
+    deltas.push_back(m.p - patch_->control_point(m.k));
+  }
+  if (!all_dense) {  // sparse supports differ: one point at a time touches only its samples
+    std::size_t touched = 0;
+    for (const PointMove& m : moves) touched = std::max(touched, move_control_point(m.k, m.p));
+    return touched;
+  }
+  for (const PointMove& m : moves) patch_->set_control_point(m.k, m.p);
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(jets_.size());
+  constexpr std::ptrdiff_t chunk = 64;  // jets still in L1 when their geometry reads them back
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+  for (std::ptrdiff_t b = 0; b < n; b += chunk) {
+    const std::ptrdiff_t e = std::min(n, b + chunk);
+    for (std::size_t m = 0; m < cols.size(); ++m)
+      for (std::ptrdiff_t i = b; i < e; ++i) axpy(jets_[i], deltas[m], cols[m]->phi[i]);
+    update_geometry({}, b, e - b);
+  }
+  ++revision_;
+  return jets_.size();
 }
 
 std::size_t PatchEvaluator::influence_bytes() const {

@@ -43,11 +43,27 @@ class PatchEvaluator {
   // Moves control point k to p, updating only the samples it influences. Returns their count.
   std::size_t move_control_point(std::size_t k, const Vec3& p);
 
+  // Moves several control points at once (a network edit moves a face's vertex, handles and
+  // derived ribbon points together): every point's weight is added, then each touched sample's
+  // geometry is recomputed once. Falls back to a full re-evaluation when the points are more than
+  // the columns this evaluator keeps (building columns that evict each other every frame costs
+  // more than evaluating). Returns the number of samples updated.
+  struct PointMove {
+    std::size_t k;
+    Vec3 p;
+  };
+  std::size_t move_control_points(std::span<const PointMove> moves);
+
   // Memory held by cached influence columns, in bytes.
   std::size_t influence_bytes() const;
 
-  // How many influence columns are kept (most recently used first out when full).
+  // How many influence columns are kept (most recently used first out when full): at least
+  // kMaxColumns, more while they fit in kColumnBudget bytes (a small face keeps the columns of
+  // every point a vertex drag moves; a million-sample surface keeps kMaxColumns).
   static constexpr std::size_t kMaxColumns = 4;
+  static constexpr std::size_t kColumnBudget = std::size_t(64) << 20;
+  std::size_t max_columns() const;
+  void set_column_budget(std::size_t bytes) { column_budget_ = bytes; }  // tests, tuning
 
  private:
   // Jets allocated but not initialised: the column build writes every one in parallel, and
@@ -82,6 +98,7 @@ class PatchEvaluator {
   JetArray spare_;  // sample_count() entries, or empty
   uint64_t use_clock_ = 0;
   uint64_t revision_ = 0;
+  std::size_t column_budget_ = kColumnBudget;
 };
 
 }  // namespace pl

@@ -16,13 +16,12 @@ bool follow(PatchEvaluator& ev, const Patch& target, SyncStats& stats) {
   if (current.type() != target.type() || current.size() != target.size() ||
       current.domain().key() != target.domain().key())
     return false;
-  std::size_t moved = 0;
+  std::vector<PatchEvaluator::PointMove> moves;
   for (std::size_t k = 0; k < target.size(); ++k)
-    if (current.control_point(k) != target.control_point(k)) {
-      ev.move_control_point(k, target.control_point(k));
-      ++moved;
-    }
-  stats.moved_points += moved;
+    if (current.control_point(k) != target.control_point(k))
+      moves.push_back({k, target.control_point(k)});
+  ev.move_control_points(moves);
+  stats.moved_points += moves.size();
   return true;
 }
 

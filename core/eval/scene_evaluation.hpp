@@ -2,10 +2,10 @@
 //
 // sync() brings it up to date with the scene after any edit: network faces are re-filled (the
 // Chiyokura–Kimura construction is cheap next to evaluation) and every surface's control points
-// are compared with the ones its evaluator holds; only points that differ are moved, each as one
-// axpy over the samples it influences. A face whose domain or point count changed (a concave
-// domain follows its boundary) is re-evaluated from scratch. So an edit costs in proportion to
-// what it really changed, whoever produced the patches.
+// are compared with the ones its evaluator holds; only points that differ are moved, together
+// (PatchEvaluator::move_control_points: one axpy each, geometry once per sample). A face whose
+// domain or point count changed (a concave domain follows its boundary) is re-evaluated from
+// scratch. So an edit costs in proportion to what it really changed, whoever produced the patches.
 #pragma once
 
 #include <optional>

@@ -77,14 +77,12 @@ NetworkEditor::Update NetworkEditor::refresh(const std::vector<int>& vertices) {
       up.faces.push_back(f);
       continue;
     }
-    bool changed = false;
+    std::vector<PatchEvaluator::PointMove> moves;
     for (std::size_t k = 0; k < next.size(); ++k)
-      if (now[k] != next[k]) {
-        ev.move_control_point(k, next[k]);
-        ++up.moved_points;
-        changed = true;
-      }
-    if (changed) up.faces.push_back(f);
+      if (now[k] != next[k]) moves.push_back({k, next[k]});
+    ev.move_control_points(moves);
+    up.moved_points += moves.size();
+    if (!moves.empty()) up.faces.push_back(f);
   }
   return up;
 }

@@ -1,7 +1,8 @@
 // Interactive editing of a curve network: moving a vertex or an edge handle recomputes only what
 // depends on it (the tangent plane at the vertex, the Chiyokura–Kimura fields of the edges at
 // that vertex, the patches of the faces using those edges) and updates those faces' samples
-// incrementally, one PatchEvaluator::move_control_point per control point that changed.
+// incrementally, the changed control points of a face moved together
+// (PatchEvaluator::move_control_points).
 #pragma once
 
 #include <memory>

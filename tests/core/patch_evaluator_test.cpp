@@ -29,7 +29,9 @@ TEST(PatchEvaluator, HundredsOfRandomMovesEqualFullReevaluation) {
                                    patch->control_point(k) + Vec3(step(rng), step(rng), step(rng)));
   }
   EXPECT_LE(incremental.influence_bytes(),
-            PatchEvaluator::kMaxColumns * tess->points.size() * sizeof(Jet));
+            incremental.max_columns() * tess->points.size() * sizeof(Jet));
+  EXPECT_LE(incremental.max_columns() * tess->points.size() * sizeof(Jet),
+            PatchEvaluator::kColumnBudget);
   // From scratch, on an independent copy of the moved patch.
   auto copy = std::shared_ptr<Patch>(patch->clone());
   PatchEvaluator full(copy, tess);
@@ -55,6 +57,62 @@ TEST(PatchEvaluator, HundredsOfRandomMovesEqualFullReevaluation) {
       "max relative difference after 400 moves: position %.3g, derivatives %.3g, "
       "normal %.3g, curvature %.3g\n",
       worst_p, worst_d, worst_n, worst_k);
+}
+
+// Largest relative difference of positions, second derivatives and curvatures between two
+// evaluators of the same tessellation.
+double worst_difference(const PatchEvaluator& a, const PatchEvaluator& b) {
+  double scale = 0, worst = 0;
+  for (const SurfaceJet& j : b.jets()) scale = std::max(scale, glm::length(j.p));
+  for (std::size_t i = 0; i < b.sample_count(); ++i) {
+    const SurfaceJet &x = a.jets()[i], &y = b.jets()[i];
+    const SurfaceGeometry &gx = a.geometry()[i], &gy = b.geometry()[i];
+    const double kscale = std::max(1.0, std::fabs(gy.kmax) + std::fabs(gy.kmin));
+    worst = std::max({worst, rel_diff(x.p, y.p, scale), rel_diff(x.suv, y.suv, scale),
+                      rel_diff(x.svv, y.svv, scale), glm::length(gx.normal - gy.normal),
+                      std::fabs(gx.mean - gy.mean) / kscale});
+  }
+  return worst;
+}
+
+TEST(PatchEvaluator, BatchedMovesEqualFullReevaluation) {
+  // Interior points, corner and edge points (weights vanishing on two sides), and six points:
+  // with the budget at 0 only kMaxColumns columns are kept, so that batch takes the full
+  // re-evaluation path.
+  auto tess = std::make_shared<const Tessellation>(UnitSquareDomain().tessellate(30));
+  const std::vector<std::vector<std::size_t>> batches = {{6, 7, 11, 12}, {0, 5, 6, 19}, {}};
+  for (std::size_t budget : {PatchEvaluator::kColumnBudget, std::size_t(0)}) {
+    for (const auto& ks : batches) {
+      auto patch = std::make_shared<BezierPatch>(3, 4, test::random_points(20, 5));
+      PatchEvaluator ev(patch, tess);
+      ev.set_column_budget(budget);  // 0: kMaxColumns columns, so 6 moves take the full path
+      std::vector<std::size_t> moved =
+          ks.empty() ? std::vector<std::size_t>{1, 2, 3, 8, 9, 13} : ks;
+      for (int step = 0; step < 3; ++step) {  // repeated, as in a drag: columns are reused
+        std::vector<PatchEvaluator::PointMove> moves;
+        for (std::size_t k : moved)
+          moves.push_back({k, patch->control_point(k) + Vec3(0.05 * (k + 1), -0.1, 0.2 * step)});
+        const uint64_t rev = ev.revision();
+        EXPECT_GT(ev.move_control_points(moves), 0u);
+        EXPECT_GT(ev.revision(), rev);
+        for (const auto& m : moves) EXPECT_EQ(ev.patch().control_point(m.k), m.p);
+      }
+      PatchEvaluator full(std::shared_ptr<Patch>(patch->clone()), tess);
+      const double worst = worst_difference(ev, full);
+      EXPECT_LT(worst, 1e-12) << "budget " << budget << ", " << moved.size() << " points";
+      std::printf("batched moves (%zu points, budget %zu): max relative difference %.3g\n",
+                  moved.size(), budget, worst);
+    }
+  }
+}
+
+TEST(PatchEvaluator, SmallSurfacesKeepMoreColumns) {
+  auto patch = std::make_shared<BezierPatch>(3, 3, test::random_points(16, 3));
+  PatchEvaluator small(patch,
+                       std::make_shared<const Tessellation>(UnitSquareDomain().tessellate(16)));
+  EXPECT_EQ(small.max_columns(), PatchEvaluator::kColumnBudget / (17 * 17 * sizeof(Jet)));
+  small.set_column_budget(0);
+  EXPECT_EQ(small.max_columns(), PatchEvaluator::kMaxColumns);
 }
 
 TEST(PatchEvaluator, OnlyInfluencedSamplesChangeAndRevisionAdvances) {
