@@ -35,6 +35,9 @@ class GBRibbonPatch final : public Patch {
   // The largest ribbon degree and layer count the gb-ribbons format accepts (the codec's limits;
   // the elevation functions refuse to go beyond them).
   static constexpr int kMaxDegree = 30, kMaxLayers = 15;
+  // The most sides the gb-ribbons format accepts; evaluate() keeps its per-sample arrays on the
+  // stack up to this size.
+  static constexpr int kMaxSides = 64;
 
   // ribbons[i][k][j] = C^i_{j,k}. Throws std::invalid_argument for sizes that do not match the
   // domain, l < 2, degree < 1, ribbons that do not share their corner points, straight domain
@@ -48,6 +51,9 @@ class GBRibbonPatch final : public Patch {
   const ConcavePolygonDomain& polygon() const { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
   void basis(Vec2 x, std::span<Jet> out) const override;
+  // sum b C / sum b summed directly (power tables per ribbon, no heap allocation per sample);
+  // equal to the basis() sum up to rounding, and the basis() corner limits at the vertices.
+  SurfaceJet evaluate(Vec2 x) const override;
   std::vector<BezierCurve> boundary_curves() const override;
 
   int sides() const { return static_cast<int>(degree_.size()); }
@@ -66,6 +72,8 @@ class GBRibbonPatch final : public Patch {
   ConcavePolygonDomain domain_;
   std::vector<int> degree_, layers_;
   std::vector<std::size_t> offset_;
+  // At most kMaxSides sides: evaluate()'s stack arrays hold them.
+  bool fast_evaluate_ = false;
 };
 
 }  // namespace pl
