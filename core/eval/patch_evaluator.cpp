@@ -164,6 +164,23 @@ std::size_t PatchEvaluator::move_control_points(std::span<const PointMove> moves
     evaluate_all();
     return jets_.size();
   }
+  // Columns pay off only when the same points move again (a drag): a one-off edit of several
+  // points whose columns are missing (the fine view's sync when a drag ends) is cheaper as one
+  // full evaluation than as several column builds, each about as costly for most patch types.
+  std::vector<std::size_t> keys;
+  std::size_t missing = 0;
+  for (const PointMove& m : moves) {
+    keys.push_back(m.k);
+    missing +=
+        std::none_of(columns_.begin(), columns_.end(), [&](const Column& c) { return c.k == m.k; });
+  }
+  const bool repeated = keys == last_batch_;
+  last_batch_ = std::move(keys);
+  if (missing > 1 && !repeated) {
+    for (const PointMove& m : moves) patch_->set_control_point(m.k, m.p);
+    evaluate_all();
+    return jets_.size();
+  }
   // Build (or touch) every column first: the batch is the most recently used, so none of its
   // columns is evicted by another's build, and the pointers taken afterwards stay valid.
   for (const PointMove& m : moves) column(m.k);

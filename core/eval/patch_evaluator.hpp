@@ -47,7 +47,8 @@ class PatchEvaluator {
   // derived ribbon points together): every point's weight is added, then each touched sample's
   // geometry is recomputed once. Falls back to a full re-evaluation when the points are more than
   // the columns this evaluator keeps (building columns that evict each other every frame costs
-  // more than evaluating). Returns the number of samples updated.
+  // more than evaluating), and when several columns are missing for points that did not move in
+  // the previous call too (a one-off edit, not a drag). Returns the number of samples updated.
   struct PointMove {
     std::size_t k;
     Vec3 p;
@@ -99,6 +100,7 @@ class PatchEvaluator {
   uint64_t use_clock_ = 0;
   uint64_t revision_ = 0;
   std::size_t column_budget_ = kColumnBudget;
+  std::vector<std::size_t> last_batch_;  // the points move_control_points moved last time
 };
 
 }  // namespace pl
