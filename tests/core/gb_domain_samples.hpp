@@ -1,4 +1,4 @@
-// Sample points of the regular n-gon domain for the GB default-net and elevation tests.
+// Sample points of the regular n-gon domain for the GB patch, default-net and elevation tests.
 #pragma once
 
 #include <random>

@@ -5,30 +5,12 @@
 
 #include "core/eval/patch_evaluator.hpp"
 #include "core/patch/bezier_patch.hpp"
+#include "gb_domain_samples.hpp"
 #include "gb_test_util.hpp"
 #include "test_util.hpp"
 
 namespace pl {
 namespace {
-
-// Random interior points of the regular n-gon (rejection sampling in [-1,1]^2).
-std::vector<Vec2> interior_points(const ConvexPolygonDomain& dom, int count, unsigned seed,
-                                  double margin = 1e-3) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> r(-1, 1);
-  std::vector<Vec2> out;
-  const int n = dom.side_count();
-  while (static_cast<int>(out.size()) < count) {
-    const Vec2 x(r(rng), r(rng));
-    bool inside = true;
-    for (int i = 0; i < n; ++i) {
-      const Vec2 a = dom.vertex(i - 1), e = glm::normalize(dom.vertex(i) - a);
-      if (e.x * (x.y - a.y) - e.y * (x.x - a.x) < margin) inside = false;
-    }
-    if (inside) out.push_back(x);
-  }
-  return out;
-}
 
 // The GB net of a tensor-product net Q (README of the reference folder).
 GBPatch gb_from_tensor(const BezierPatch& tp, const Vec3& centre) {
@@ -106,7 +88,7 @@ TEST(GBPatch, FourSidedEqualsTensorProductBezier) {
     const BezierPatch tp = random_tensor(d, 10 + d);
     const GBPatch gb = gb_from_tensor(tp, {1.0, -2.0, 7.0});  // C_0 matters only for even d
     const double scale = test::bbox_diagonal(tp.control_points());
-    auto xs = interior_points(gb.polygon(), 200, 3, 0);
+    auto xs = test::polygon_interior(gb.polygon(), 200, 3, 0);
     for (int i = 0; i < 4; ++i)
       for (int t = 0; t <= 10; ++t) xs.push_back(gb.polygon().side_point(i, t / 10.0));
     xs.push_back({0, 0});
@@ -136,7 +118,7 @@ TEST(GBPatch, PlanarNetGivesThePlane) {
       for (Vec3& q : p) q.z = 0.3 * q.x - 0.7 * q.y + 2;  // every point on one plane
       const GBPatch flat(n, d, p);
       const Vec3 normal = glm::normalize(Vec3(-0.3, 0.7, 1));
-      auto xs = interior_points(flat.polygon(), 50, n * 10 + d);
+      auto xs = test::polygon_interior(flat.polygon(), 50, n * 10 + d, 1e-3);
       for (int i = 0; i < n; ++i) xs.push_back(flat.polygon().vertex(i));
       for (Vec2 x : xs) {
         const SurfaceJet s = flat.evaluate(x);
@@ -206,7 +188,7 @@ TEST(GBPatch, DerivativesMatchFiniteDifferences) {
   for (int n = 3; n <= 8; ++n)
     for (int d = 2; d <= 6; ++d) {
       const GBPatch g = test::random_gb(n, d, 5);
-      for (Vec2 x : interior_points(g.polygon(), 20, 7 * n + d, 0.05)) {
+      for (Vec2 x : test::polygon_interior(g.polygon(), 20, 7 * n + d, 0.05)) {
         const SurfaceJet s = g.evaluate(x);
         const auto f1 = test::finite_differences(g, x, 1e-5);
         const auto f2 = test::finite_differences(g, x, 1e-4);
@@ -249,7 +231,7 @@ TEST(GBPatch, BasisAndInfluenceAgreeWithEvaluate) {
     for (int d : {1, 2, 3, 4, 5, 6}) {
       const GBPatch g = test::random_gb(n, d, 8);
       const double scale = test::bbox_diagonal(g.control_points());
-      auto xs = interior_points(g.polygon(), 20, 9, 0);
+      auto xs = test::polygon_interior(g.polygon(), 20, 9, 0);
       for (int i = 0; i < n; ++i) {
         xs.push_back(g.polygon().vertex(i));
         xs.push_back(g.polygon().side_point(i, 0.3));
@@ -333,7 +315,7 @@ TEST(GBPatch, FastPathsFollowControlPointEdits) {
   for (int n : {3, 5, 6})
     for (int d : {2, 3, 5, 6}) {
       GBPatch g = test::random_gb(n, d, 21);
-      const auto xs = interior_points(g.polygon(), 40, 22, 0);
+      const auto xs = test::polygon_interior(g.polygon(), 40, 22, 0);
       std::mt19937_64 rng(23);
       std::uniform_real_distribution<double> r(-2, 2);
       std::vector<Jet> phi(g.size()), col(xs.size());
