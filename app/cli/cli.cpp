@@ -20,6 +20,8 @@ std::span<const Command> commands() {
               "[--transparent] [--density N]",
               run_render},
       Command{"gbnet", "IN.gbp -o OUT.gbp [--defaults boundary|ring1] [--elevate K]", run_gbnet},
+      Command{"sample", "cube-sphere -o OUT.json [--cells K] [--scheme auto|gregory|gb]",
+              run_sample},
   };
   return table;
 }

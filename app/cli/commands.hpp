@@ -21,5 +21,6 @@ int run_analyze(std::span<const std::string> args, std::ostream& out, std::ostre
 int run_convert(std::span<const std::string> args, std::ostream& out, std::ostream& err);
 int run_render(std::span<const std::string> args, std::ostream& out, std::ostream& err);
 int run_gbnet(std::span<const std::string> args, std::ostream& out, std::ostream& err);
+int run_sample(std::span<const std::string> args, std::ostream& out, std::ostream& err);
 
 }  // namespace pl

@@ -54,6 +54,29 @@ TEST(NetworkFilling, ClosedEllipsoidBlobIsG1) {
   expect_g1_filling(test::mapped(test::sphere_blob(true), m), "closed_ellipsoid_blob");
 }
 
+TEST(NetworkFilling, CubeSphereIsClosedOutwardAndG1) {
+  for (int k : {1, 3}) {
+    const Network n = cube_sphere_network(k);
+    ASSERT_EQ(n.faces.size(), 6u * k * k);
+    ASSERT_EQ(n.edges.size(), 12u * k * k);
+    ASSERT_EQ(n.vertices.size(), 6u * k * k + 2);
+    const NetworkTopology topo = validate_network(n, "cube sphere");
+    for (const auto& uses : topo.edge_faces) EXPECT_EQ(uses.size(), 2u);  // closed
+    for (const Vec3& v : n.vertices) EXPECT_NEAR(glm::length(v), 1.0, 1e-15);
+    // Outward: the loop's right-hand normal agrees with the position on the sphere.
+    for (const NetworkFace& f : n.faces) {
+      Vec3 area(0), centre(0);
+      for (std::size_t i = 0; i < f.loop.size(); ++i) {
+        const Vec3 a = n.vertices[f.loop[i]], b = n.vertices[f.loop[(i + 1) % f.loop.size()]];
+        area += glm::cross(a, b);
+        centre += a;
+      }
+      EXPECT_GT(glm::dot(area, centre), 0) << f.name;
+    }
+    expect_g1_filling(n, k == 1 ? "cube_sphere_24" : "cube_sphere_54");
+  }
+}
+
 TEST(NetworkFilling, OpenHeightFieldWithGivenAndFittedNormalsIsG1) {
   expect_g1_filling(test::height_field(), "open_height_field");
 }

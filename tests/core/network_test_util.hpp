@@ -6,21 +6,10 @@
 #include <vector>
 
 #include "core/network/network_filling.hpp"
+#include "core/network/sample_networks.hpp"
 #include "core/scene/network.hpp"
 
 namespace pl::test {
-
-// Edge a-b of a network on the unit sphere: handles along the great circle, of the length that
-// makes the cubic close to the arc. All end tangents at a vertex lie in the sphere's tangent
-// plane there, so a G1 surface through the network exists.
-inline NetworkEdge sphere_edge(const std::vector<Vec3>& v, int a, int b) {
-  const Vec3 p = v[a], q = v[b];
-  const double angle = std::acos(std::clamp(glm::dot(p, q), -1.0, 1.0));
-  const double len = 4.0 / 3.0 * std::tan(angle / 4);
-  const Vec3 ta = glm::normalize(q - glm::dot(q, p) * p);
-  const Vec3 tb = glm::normalize(p - glm::dot(p, q) * q);
-  return {{a, b}, {p + len * ta, q + len * tb}, ""};
-}
 
 inline Vec3 on_sphere(double latitude_deg, double longitude_deg) {
   const double f = latitude_deg * M_PI / 180, l = longitude_deg * M_PI / 180;
