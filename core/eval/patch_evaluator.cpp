@@ -2,13 +2,14 @@
 
 #include <algorithm>
 #include <cassert>
+#include <optional>
 
 namespace pl {
 
 namespace {
-// A singular sample takes its normal and curvatures from a point this fraction of the way to the
-// domain's interior point: the limit from inside, to the precision a display needs.
-constexpr double kSingularNudge = 1e-6;
+// A singular sample takes its normal and curvatures from their limit, extrapolated from two
+// points this far and twice as far from it (Richardson: error O(h^2), rounding O(1e-16 / h)).
+constexpr double kSingularStep = 1e-5;
 
 // Below this many samples a loop runs on one thread: waking the OpenMP team costs more than it
 // saves (and spinning idle threads steal the core from the renderer and other processes).
@@ -47,12 +48,44 @@ void PatchEvaluator::update_geometry(std::span<const uint32_t> index, std::size_
     differential_geometry_many(jets_, index.subspan(first, count), geometry_);
   for (std::size_t j = first; j < first + count; ++j) {
     const std::size_t i = index.empty() ? j : index[j];
-    if (geometry_[i].status != GeometryStatus::Singular) continue;
-    const Vec2 x = tessellation_->points[i];
-    const Vec2 inside = x + kSingularNudge * (patch_->domain().interior_point() - x);
-    geometry_[i] = differential_geometry(patch_->evaluate(inside));
-    geometry_[i].status = GeometryStatus::Singular;
+    if (geometry_[i].status == GeometryStatus::Singular) geometry_[i] = singular_limit(i);
   }
+}
+
+SurfaceGeometry PatchEvaluator::singular_limit(std::size_t i) const {
+  const Domain& domain = patch_->domain();
+  // The limit at x from the points `at(h)`, `at(2h)`; nothing if those are singular too.
+  const auto limit = [&](const auto& at) -> std::optional<SurfaceGeometry> {
+    const SurfaceGeometry a = differential_geometry(patch_->evaluate(at(kSingularStep)));
+    const SurfaceGeometry b = differential_geometry(patch_->evaluate(at(2 * kSingularStep)));
+    if (a.status == GeometryStatus::Singular || b.status == GeometryStatus::Singular)
+      return std::nullopt;
+    SurfaceGeometry g;
+    g.normal = glm::normalize(2.0 * a.normal - b.normal);
+    g.gaussian = 2 * a.gaussian - b.gaussian;
+    g.mean = 2 * a.mean - b.mean;
+    g.kmin = 2 * a.kmin - b.kmin;
+    g.kmax = 2 * a.kmax - b.kmax;
+    g.status = GeometryStatus::Singular;
+    return g;
+  };
+  // On the boundary, along the side: a corner where two sides run on in one direction (a split
+  // edge's vertex) is singular only at that point, and the faces sharing the edge agree on the
+  // limit along it. Elsewhere (or if the side is degenerate itself), towards the interior.
+  const Tessellation& t = *tessellation_;
+  for (std::size_t s = 0; s < t.sides.size(); ++s) {
+    const auto& side = t.sides[s];
+    const auto at = std::find(side.begin(), side.end(), static_cast<uint32_t>(i));
+    if (at == side.end()) continue;
+    const double u = double(at - side.begin()) / t.density, dir = u < 0.5 ? 1 : -1;
+    if (auto g = limit([&](double h) { return domain.side_point(int(s), u + dir * h); })) return *g;
+    break;
+  }
+  const Vec2 x = t.points[i], d = domain.interior_point() - x;
+  if (auto g = limit([&](double h) { return x + h * d; })) return *g;
+  SurfaceGeometry g = differential_geometry(patch_->evaluate(x + 1e-3 * d));
+  g.status = GeometryStatus::Singular;
+  return g;
 }
 
 void PatchEvaluator::evaluate_all() {

@@ -90,6 +90,9 @@ class PatchEvaluator {
   void keep_storage(Column& c);
   // Geometry of samples first..first+count-1, or of index[first..first+count) if index is given.
   void update_geometry(std::span<const uint32_t> index, std::size_t first, std::size_t count);
+  // Normal and curvatures of singular sample i (Su x Sv = 0) from their limit: along its domain
+  // side for a boundary sample, else towards the domain's interior.
+  SurfaceGeometry singular_limit(std::size_t i) const;
 
   std::shared_ptr<Patch> patch_;
   std::shared_ptr<const Tessellation> tessellation_;
