@@ -105,6 +105,15 @@ void Editor::follow_document() {
           v->configure_combs(d.combs, d.comb_teeth);
           changed |= v->follow(doc_);
         }
+    // Each face's density from its size on screen, within the views' triangle budgets.
+    const ViewRect rect = panel_rects()[0];
+    const auto pixels = [&](const Vec3& c, double r) {
+      return 2 * r / world_per_pixel(camera_, rect, c);
+    };
+    if (main_view_) changed |= main_view_->fit_to_screen(pixels, doc_);
+    if (compare_)
+      for (auto& v : compare_views_)
+        if (v) changed |= v->fit_to_screen(pixels, doc_);
   } catch (const DataError& e) {
     status_message_ = e.what();
     status_time_ = Clock::now();

@@ -78,6 +78,7 @@ void SceneEvaluation::sync_faces(const FillingUpdate& up, std::vector<SceneSurfa
       const bool changed = from != f || s.name != name;
       s.name = name;
       if (changed) stats.changed_surfaces.push_back(f);
+      stats.previous_surface.push_back(from);
       out.push_back(std::move(s));
       continue;
     }
@@ -92,12 +93,14 @@ void SceneEvaluation::sync_faces(const FillingUpdate& up, std::vector<SceneSurfa
     const uint64_t before = s.evaluator ? s.evaluator->revision() : 0;
     if (s.evaluator && follow(*s.evaluator, *fp.patch, stats.moved_points)) {
       if (s.evaluator->revision() != before) stats.changed_surfaces.push_back(f);
+      stats.previous_surface.push_back(f);
     } else {
       const int density = s.evaluator ? s.evaluator->tessellation().density : density_;
       s.evaluator = make_evaluator(fp.patch->clone(), density);
       s.evaluator->continue_revisions_from(before);
       ++stats.rebuilt_surfaces;
       stats.changed_surfaces.push_back(f);
+      stats.previous_surface.push_back(-1);
     }
     out.push_back(std::move(s));
   }
@@ -123,6 +126,7 @@ void SceneEvaluation::sync_patches(const Scene& scene, std::vector<SceneSurface>
         const std::string n = piece_name(name, old_count, k);
         if (old_first + k != out.size() || s.name != n)
           stats.changed_surfaces.push_back(static_cast<int>(out.size()));
+        stats.previous_surface.push_back(static_cast<int>(old_first + k));
         s.name = n;
         out.push_back(std::move(s));
       }
@@ -144,12 +148,14 @@ void SceneEvaluation::sync_patches(const Scene& scene, std::vector<SceneSurface>
       if (s.evaluator && follow(*s.evaluator, *pieces[k], stats.moved_points)) {
         if (s.evaluator->revision() != before || old_first + k != index)
           stats.changed_surfaces.push_back(static_cast<int>(index));
+        stats.previous_surface.push_back(static_cast<int>(old_first + k));
       } else {
         const int density = s.evaluator ? s.evaluator->tessellation().density : density_;
         s.evaluator = make_evaluator(pieces[k], density);
         s.evaluator->continue_revisions_from(before);
         ++stats.rebuilt_surfaces;
         stats.changed_surfaces.push_back(static_cast<int>(index));
+        stats.previous_surface.push_back(-1);
       }
       out.push_back(std::move(s));
     }
@@ -179,9 +185,11 @@ void SceneEvaluation::rebuild_shared_edges() {
 SyncStats SceneEvaluation::set_densities(std::span<const int> densities) {
   if (densities.size() != surfaces_.surfaces.size())
     throw std::invalid_argument("set_densities needs one density per surface");
+  for (int d : densities)
+    if (d < 1) throw std::invalid_argument("a density must be at least 1");
   SyncStats stats;
   for (std::size_t i = 0; i < densities.size(); ++i) {
-    if (densities[i] < 1) throw std::invalid_argument("a density must be at least 1");
+    stats.previous_surface.push_back(static_cast<int>(i));
     SceneSurface& s = surfaces_.surfaces[i];
     if (s.evaluator->tessellation().density == densities[i]) continue;
     const uint64_t before = s.evaluator->revision();

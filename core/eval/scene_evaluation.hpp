@@ -33,6 +33,9 @@ struct SyncStats {
   // Surfaces (indices after the sync) whose samples changed or that are not the surface that
   // had this index before: what a renderer re-uploads and a curve cache resamples.
   std::vector<int> changed_surfaces;
+  // Per surface after the sync: its index before, or -1 for a new one (a surface that followed a
+  // new patch point by point keeps its index; one evaluated from scratch is new).
+  std::vector<int> previous_surface;
   std::size_t moved_points = 0;      // control points moved incrementally
   std::size_t rebuilt_surfaces = 0;  // surfaces evaluated from scratch
   bool renumbered = false;           // surfaces were added, removed or renumbered
