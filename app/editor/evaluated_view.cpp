@@ -61,8 +61,9 @@ EvaluatedView::EvaluatedView(const Document& doc, std::optional<FaceScheme> sche
       coarse_budget_{2, coarse_density, 6.0 * fine_density / std::max(1, coarse_density),
                      budgets.coarse_triangles},
       coarse_(doc.scene(), coarse_density, scheme, source_of(doc), doc.revision()),
+      // At rest a drag's release moves points once: the fine view keeps no jets.
       fine_(doc.scene(), start_density(coarse_, fine_budget_), scheme, source_of(doc),
-            doc.revision()),
+            doc.revision(), SampleStorage::Compact),
       curves_(combs, comb_teeth),
       fine_revision_(doc.revision()),
       coarse_revision_(doc.revision()) {

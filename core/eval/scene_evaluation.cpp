@@ -34,8 +34,12 @@ bool follow(PatchEvaluator& ev, const Patch& target, std::size_t& moved) {
 }  // namespace
 
 SceneEvaluation::SceneEvaluation(const Scene& scene, int density, std::optional<FaceScheme> scheme,
-                                 std::string source)
-    : density_(density), scheme_(scheme), source_(std::move(source)), filling_(scheme, source_) {
+                                 std::string source, SampleStorage storage)
+    : density_(density),
+      scheme_(scheme),
+      source_(std::move(source)),
+      storage_(storage),
+      filling_(scheme, source_) {
   if (density < 1) throw std::invalid_argument("SceneEvaluation: density must be at least 1");
   sync(scene);
 }
@@ -43,7 +47,7 @@ SceneEvaluation::SceneEvaluation(const Scene& scene, int density, std::optional<
 std::unique_ptr<PatchEvaluator> SceneEvaluation::make_evaluator(std::shared_ptr<Patch> patch,
                                                                 int density) {
   auto tess = cache_.get(patch->domain(), density);
-  return std::make_unique<PatchEvaluator>(std::move(patch), std::move(tess));
+  return std::make_unique<PatchEvaluator>(std::move(patch), std::move(tess), storage_);
 }
 
 SyncStats SceneEvaluation::sync(const Scene& scene) {

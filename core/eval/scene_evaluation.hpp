@@ -43,13 +43,15 @@ struct SyncStats {
 
 class SceneEvaluation {
  public:
-  // Evaluates every surface at `density` (>= 1). Throws DataError like evaluate_scene.
+  // Evaluates every surface at `density` (>= 1), keeping each sample as `storage` says. Throws
+  // DataError like evaluate_scene.
   SceneEvaluation(const Scene& scene, int density, std::optional<FaceScheme> scheme,
-                  std::string source = "scene");
+                  std::string source = "scene", SampleStorage storage = SampleStorage::Jets);
 
   const SceneSurfaces& surfaces() const { return surfaces_; }
   int density() const { return density_; }  // of new surfaces
   std::optional<FaceScheme> scheme() const { return scheme_; }
+  SampleStorage storage() const { return storage_; }
 
   // Follows the scene's current state. Throws DataError if the edited network cannot be filled;
   // the evaluation is then left as it was.
@@ -82,6 +84,7 @@ class SceneEvaluation {
   int density_;
   std::optional<FaceScheme> scheme_;
   std::string source_;
+  SampleStorage storage_;
   IncrementalFilling filling_;
   std::vector<PatchSource> patch_sources_;
   SceneSurfaces surfaces_;

@@ -240,5 +240,20 @@ TEST(SceneEvaluation, SurfacesMayHaveTheirOwnDensity) {
   EXPECT_THROW(ev.set_densities(std::vector<int>{1}), std::invalid_argument);
 }
 
+// The compact storage of a view at rest follows moves and topology edits the same way.
+TEST(SceneEvaluation, CompactStorageFollowsEditsLikeAFreshEvaluation) {
+  Scene s = scene_of(test::sphere_blob(true));
+  SceneEvaluation ev(s, kDensity, std::nullopt, "compact", SampleStorage::Compact);
+  for (const SceneSurface& surface : ev.surfaces().surfaces)
+    EXPECT_TRUE(surface.evaluator->jets().empty());
+  move_vertex(s, 1, s.network->vertices[1] + Vec3(0.03, 0.02, -0.01));
+  s.network->edges[5].handles[0] += Vec3(0, 0.01, 0.01);
+  ev.sync(s);
+  test::expect_equals_fresh_evaluation(ev, s, kDensity);
+  s.network->faces.erase(s.network->faces.begin() + 4);
+  ev.sync(s);
+  test::expect_equals_fresh_evaluation(ev, s, kDensity);
+}
+
 }  // namespace
 }  // namespace pl

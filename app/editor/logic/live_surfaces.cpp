@@ -23,8 +23,8 @@ std::array<Vec3, 4> edge_points(const Network& net, int e) {
 }  // namespace
 
 LiveSurfaces::LiveSurfaces(const Scene& scene, int density, std::optional<FaceScheme> scheme,
-                           const std::string& source, uint64_t revision)
-    : evaluation_(scene, density, scheme, source), revision_(revision) {
+                           const std::string& source, uint64_t revision, SampleStorage storage)
+    : evaluation_(scene, density, scheme, source, storage), revision_(revision) {
   for (const SceneSurface& s : evaluation_.surfaces().surfaces)
     draw_.surfaces.push_back(make_surface_mesh(*s.evaluator, s.name));
   rebuild_overlays(scene);

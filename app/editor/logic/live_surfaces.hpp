@@ -24,7 +24,8 @@ class LiveSurfaces {
  public:
   // Throws DataError like evaluate_scene. `revision`: the document revision `scene` is.
   LiveSurfaces(const Scene& scene, int density, std::optional<FaceScheme> scheme,
-               const std::string& source, uint64_t revision = 0);
+               const std::string& source, uint64_t revision = 0,
+               SampleStorage storage = SampleStorage::Jets);
 
   // Brings the evaluation up to `scene` (revision `revision` of the document). Returns the
   // indices of surfaces whose meshes (and patches) changed. Throws DataError when the edited
