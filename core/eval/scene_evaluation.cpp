@@ -61,7 +61,8 @@ SyncStats SceneEvaluation::sync(const Scene& scene) {
   sync_faces(up, out, stats);
   sync_patches(scene, out, stats);
   surfaces_.surfaces = std::move(out);
-  if (up.renumbered) rebuild_shared_edges();
+  if (up.renumbered)
+    surfaces_.shared_edges = shared_edges_of(filling_.topology(), surfaces_.surfaces);
   if (up.projected_changed) surfaces_.projected_vertices = filling_.projected_vertices();
   return stats;
 }
@@ -168,22 +169,6 @@ void SceneEvaluation::sync_patches(const Scene& scene, std::vector<SceneSurface>
   }
   if (sources.size() != patch_sources_.size() || out.size() != old.size()) stats.renumbered = true;
   patch_sources_ = std::move(sources);
-}
-
-void SceneEvaluation::rebuild_shared_edges() {
-  const NetworkTopology& topo = filling_.topology();
-  surfaces_.shared_edges.clear();
-  for (std::size_t e = 0; e < topo.edge_faces.size(); ++e) {
-    const auto& uses = topo.edge_faces[e];
-    if (uses.size() != 2) continue;
-    SharedEdge se;
-    se.edge = static_cast<int>(e);
-    for (int k = 0; k < 2; ++k) {
-      se.surface[k] = uses[k].face;  // face f is surface f
-      se.side[k] = filling_.patch_side(uses[k].face).at(uses[k].side);
-    }
-    surfaces_.shared_edges.push_back(se);
-  }
 }
 
 SyncStats SceneEvaluation::set_densities(std::span<const int> densities) {

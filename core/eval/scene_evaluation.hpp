@@ -78,7 +78,6 @@ class SceneEvaluation {
   std::unique_ptr<PatchEvaluator> make_evaluator(std::shared_ptr<Patch> patch, int density);
   void sync_faces(const FillingUpdate& up, std::vector<SceneSurface>& out, SyncStats& stats);
   void sync_patches(const Scene& scene, std::vector<SceneSurface>& out, SyncStats& stats);
-  void rebuild_shared_edges();
 
   TessellationCache cache_;
   int density_;

@@ -19,16 +19,6 @@
 namespace pl::test {
 namespace {
 
-struct Continuity {
-  double angle_deg = 0;
-  std::size_t projected = 0;
-};
-Continuity continuity(const Network& n) {
-  const NetworkTopology topo = validate_network(n, "test");
-  const NetworkFilling filling = fill_network(n, topo, std::nullopt, "test");
-  return {max_g1_angle_deg(topo, surfaces(filling)), filling.projected_vertices.size()};
-}
-
 std::vector<std::pair<std::string, Scene>> sample_scenes() {
   std::vector<std::pair<std::string, Scene>> out;
   for (const char* name : {"default.json", "gb-concave-l.json", "gb-hole-filling.json",
@@ -48,7 +38,7 @@ std::vector<std::pair<std::string, Scene>> sample_scenes() {
 TEST(AuthoringEngine, TwoHundredRandomHandleDragsKeepTheSampleNetworksG1) {
   for (auto& [name, scene] : sample_scenes()) {
     ASSERT_TRUE(scene.network) << name;
-    const Continuity start = continuity(*scene.network);
+    const Continuity start = filled_continuity(*scene.network);
     ASSERT_LT(start.angle_deg, 1e-6) << name;
     ASSERT_EQ(start.projected, 0u) << name;
     Document doc(scene);
@@ -65,7 +55,7 @@ TEST(AuthoringEngine, TwoHundredRandomHandleDragsKeepTheSampleNetworksG1) {
         doc.drag_to({h + reach * glm::normalize(Vec3(gauss(rng), gauss(rng), gauss(rng)))});
       doc.end_drag();
     }
-    const Continuity after = continuity(*doc.scene().network);
+    const Continuity after = filled_continuity(*doc.scene().network);
     EXPECT_LT(after.angle_deg, 1e-6) << name;
     EXPECT_EQ(after.projected, 0u) << name;
     EXPECT_NE(*doc.scene().network, *scene.network) << name;  // the drags did move handles

@@ -14,18 +14,6 @@
 namespace pl::test {
 namespace {
 
-// Largest G1 angle over shared edges and the projected vertices of a from-scratch filling,
-// measured from exact patch derivatives (network_test_util), not by the engine.
-struct Continuity {
-  double angle_deg = 0;
-  std::size_t projected = 0;
-};
-Continuity continuity(const Network& n) {
-  const NetworkTopology topo = validate_network(n, "test");
-  const NetworkFilling filling = fill_network(n, topo, std::nullopt, "test");
-  return {max_g1_angle_deg(topo, surfaces(filling)), filling.projected_vertices.size()};
-}
-
 // Eight vertices in general position: a quad, a triangle and a pentagon fit on them.
 const std::vector<Vec3> kPoints{{0, 0, 0},   {1, 0, 0.1},   {2, 0, 0},   {0, 1, 0.1},
                                 {1, 1, 0.3}, {2.5, 1, 0.1}, {1, 2, 0.1}, {2, 2.2, 0}};
@@ -99,7 +87,7 @@ TEST(NetworkCommands, MakeFaceCreatesMissingEdgesAndAgreesWithItsNeighbours) {
   EXPECT_EQ(n.edges.size(), 10u);
   EXPECT_NO_THROW(validate_network(n, "test"));
   // Every vertex's end tangents share a plane, so the filling is G1 without projecting any.
-  const Continuity c = continuity(n);
+  const Continuity c = filled_continuity(n);
   EXPECT_LT(c.angle_deg, 1e-6);
   EXPECT_EQ(c.projected, 0u);
 
@@ -135,7 +123,7 @@ TEST(NetworkCommands, FillHolesClosesEveryBoundaryLoopOfThreeToTwelveSides) {
   EXPECT_EQ(expect_good_command(doc, std::make_unique<FillHolesCommand>()), "fill hole: face 10");
   const Network& n = *doc.scene().network;
   EXPECT_EQ(n.faces.back().loop.size(), 5u);
-  const Continuity c = continuity(n);
+  const Continuity c = filled_continuity(n);
   EXPECT_LT(c.angle_deg, 1e-6);
   EXPECT_EQ(c.projected, 0u);
   expect_refused(doc, std::make_unique<FillHolesCommand>(), "no closed loop");
@@ -198,7 +186,7 @@ TEST(NetworkCommands, SplitEdgeKeepsTheCurveAndGivesItsFacesASide) {
   EXPECT_EQ(faces_with_v, 2);
   ASSERT_FALSE(n.normals.empty());
   EXPECT_TRUE(n.normals[v].has_value());
-  const Continuity c = continuity(n);
+  const Continuity c = filled_continuity(n);
   EXPECT_LT(c.angle_deg, 1e-6);
   EXPECT_EQ(c.projected, 0u);
   expect_refused(doc, std::make_unique<SplitEdgeCommand>(e, 1.0), "between 0 and 1");
@@ -230,13 +218,13 @@ TEST(NetworkCommands, SchemesNamesAndNormals) {
   const Vec3 normal = *n.normals[0];
   EXPECT_LT(glm::length(normal - glm::normalize(Vec3(0.2, 0.1, 1))), 1e-15);
   for (int e : edges_at(n, 0)) EXPECT_LT(std::fabs(glm::dot(end_tangent(n, e, 0), normal)), 1e-14);
-  Continuity c = continuity(n);
+  Continuity c = filled_continuity(n);
   EXPECT_LT(c.angle_deg, 1e-6);
   EXPECT_EQ(c.projected, 0u);
   // Back to fitted: the handles stay, and the fitted plane is the one they lie in.
   expect_good_command(doc, std::make_unique<SetVertexNormalCommand>(0, std::nullopt));
   EXPECT_FALSE(doc.scene().network->normals[0].has_value());
-  c = continuity(*doc.scene().network);
+  c = filled_continuity(*doc.scene().network);
   EXPECT_LT(c.angle_deg, 1e-6);
   EXPECT_EQ(c.projected, 0u);
   expect_refused(doc, std::make_unique<SetVertexNormalCommand>(0, Vec3(0)), "non-zero");
@@ -277,7 +265,7 @@ TEST(NetworkCommands, AnAuthoringSessionIsG1AndReplaysByteForByte) {
   ASSERT_EQ(report["edges"].size(), 2u);  // the triangle's edges with the quad and the pentagon
   for (const auto& e : report["edges"]) EXPECT_LT(e["max_normal_angle_deg"].get<double>(), 1e-6);
   EXPECT_TRUE(report["vertices"].empty());
-  const Continuity c = continuity(n);
+  const Continuity c = filled_continuity(n);
   EXPECT_LT(c.angle_deg, 1e-6);
   EXPECT_EQ(c.projected, 0u);
 

@@ -191,4 +191,16 @@ inline std::vector<FaceSurface> surfaces(const NetworkFilling& filling) {
   return out;
 }
 
+// The largest G1 angle over the shared edges of a from-scratch filling of n (exact derivatives,
+// not an engine's samples) and how many vertices it had to project.
+struct Continuity {
+  double angle_deg = 0;
+  std::size_t projected = 0;
+};
+inline Continuity filled_continuity(const Network& n) {
+  const NetworkTopology topo = validate_network(n, "test");
+  const NetworkFilling filling = fill_network(n, topo, std::nullopt, "test");
+  return {max_g1_angle_deg(topo, surfaces(filling)), filling.projected_vertices.size()};
+}
+
 }  // namespace pl::test
