@@ -5,6 +5,8 @@
 #include <IGESCAFControl_Reader.hxx>
 #include <IGESCAFControl_Writer.hxx>
 #include <IGESControl_Controller.hxx>
+#include <IGESData_IGESEntity.hxx>
+#include <Interface_InterfaceModel.hxx>
 #include <Interface_Static.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
@@ -21,9 +23,13 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
+#include <TransferBRep.hxx>
+#include <Transfer_TransientProcess.hxx>
 #include <XCAFApp_Application.hxx>
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
+#include <XSControl_TransferReader.hxx>
+#include <XSControl_WorkSession.hxx>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -61,6 +67,13 @@ std::string label_name(const TDF_Label& l) {
 
 void set_name(const TDF_Label& l, const std::string& name) {
   TDataStd_Name::Set(l, TCollection_ExtendedString(name.c_str(), true));  // UTF-8
+}
+
+// IGES labels are right-justified in their 8-character field.
+std::string trimmed(std::string s) {
+  const auto first = s.find_first_not_of(' ');
+  const auto last = s.find_last_not_of(' ');
+  return first == std::string::npos ? std::string() : s.substr(first, last - first + 1);
 }
 
 std::mutex occt_mutex;  // OCCT's static parameters (Interface_Static) are process-wide
@@ -128,6 +141,7 @@ CadFile read_cad_file(const std::filesystem::path& path, CadFormat format) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw DataError(where, "", "no such file");
   XdeDocument xde;
+  std::vector<std::pair<std::string, TopoDS_Shape>> iges_names;
   if (format == CadFormat::Step) {
     STEPCAFControl_Controller::Init();
     Interface_Static::SetIVal("read.stepcaf.subshapes.name", 1);
@@ -143,6 +157,17 @@ CadFile read_cad_file(const std::filesystem::path& path, CadFormat format) {
     if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
       throw DataError(where, "", "OpenCASCADE cannot read it as IGES");
     if (!reader.Transfer(xde.doc())) throw DataError(where, "", "no shape in the IGES file");
+    // The XDE reader names only top-level shapes; face names are the labels of the face
+    // entities (IGES labels hold 8 characters), found through the transfer's results.
+    const Handle(Interface_InterfaceModel) model = reader.WS()->Model();
+    const Handle(Transfer_TransientProcess) tp = reader.WS()->TransferReader()->TransientProcess();
+    for (int i = 1; i <= model->NbEntities(); ++i) {
+      const auto e = Handle(IGESData_IGESEntity)::DownCast(model->Value(i));
+      if (e.IsNull() || !e->HasShortLabel()) continue;
+      const TopoDS_Shape s = TransferBRep::ShapeResult(tp, e);
+      if (!s.IsNull() && s.ShapeType() == TopAbs_FACE)
+        iges_names.emplace_back(trimmed(e->ShortLabel()->ToCString()), s);
+    }
   }
   const Handle(XCAFDoc_ShapeTool) st = xde.shapes();
   TDF_LabelSequence roots;
@@ -159,7 +184,7 @@ CadFile read_cad_file(const std::filesystem::path& path, CadFormat format) {
     out.shape = all;
   }
   // Names of sub-shape labels (faces), found again in the shape by identity.
-  std::vector<std::pair<std::string, TopoDS_Shape>> named;
+  std::vector<std::pair<std::string, TopoDS_Shape>> named = iges_names;
   for (int i = 1; i <= roots.Length(); ++i) {
     TDF_LabelSequence subs;
     st->GetSubShapes(roots(i), subs);

@@ -116,9 +116,15 @@ SewnShape sew_model(const CadModel& model, double tolerance) {
     single = part;
     ++parts;
   }
+  // A face the sewing left outside every shell gets a shell of its own: the file then has a
+  // shape (named after the scene) whose faces carry their own names.
   for (TopExp_Explorer e(sewn, TopAbs_FACE, TopAbs_SHELL); e.More(); e.Next()) {
-    builder.Add(all, e.Current());  // faces the sewing left outside every shell
-    single = e.Current();
+    TopoDS_Shell shell;
+    builder.MakeShell(shell);
+    builder.Add(shell, e.Current());
+    builder.Add(all, shell);
+    single = shell;
+    ++out.shells;
     ++parts;
   }
   out.shape = parts == 1 ? single : TopoDS_Shape(all);

@@ -3,7 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
+#include <map>
 #include <utility>
 
 #include "core/analysis/scene_analysis.hpp"  // angle_deg
@@ -105,60 +105,67 @@ int span_count(const std::vector<double>& U) {
   return static_cast<int>(knot_runs(U).size()) - 1;
 }
 
-// Samples per span: two where the spans alone give enough equations, else p.
-int per_span(int p, const std::vector<double>& U) {
-  const int spans = static_cast<int>(knot_runs(U).size()) - 1;
-  return 2 * spans + 1 >= p + 1 ? 2 : p;
-}
-
 // The function's values on tensor grids, remembered across refinements: a refined grid keeps
-// most of the previous one's parameters (keys are the parameters rounded to 2^-40).
+// most of the previous one's parameters. Parameters are identified by their value rounded to
+// 2^-40; values are kept in a table indexed by the parameters' indices.
 class GridCache {
  public:
   explicit GridCache(const SurfaceFunction& f) : f_(f) {}
   void evaluate(const std::vector<double>& tu, const std::vector<double>& tv,
                 std::vector<SurfacePoint>& out) {
+    std::vector<int> iu(tu.size()), iv(tv.size());
+    for (std::size_t a = 0; a < tu.size(); ++a) iu[a] = index(u_, tu[a]);
+    for (std::size_t b = 0; b < tv.size(); ++b) iv[b] = index(v_, tv[b]);
+    rows_.resize(u_.size());
     out.resize(tu.size() * tv.size());
     std::vector<Vec2> missing;
-    std::vector<std::size_t> where;
-    for (std::size_t a = 0; a < tu.size(); ++a)
-      for (std::size_t b = 0; b < tv.size(); ++b) {
-        const auto it = values_.find(key(tu[a], tv[b]));
-        if (it != values_.end()) {
-          out[a * tv.size() + b] = it->second;
-        } else {
+    std::vector<std::pair<int, int>> cell;
+    for (std::size_t a = 0; a < tu.size(); ++a) {
+      Row& row = rows_[iu[a]];
+      row.value.resize(v_.size());
+      row.known.resize(v_.size(), 0);
+      for (std::size_t b = 0; b < tv.size(); ++b)
+        if (!row.known[iv[b]]) {
           missing.emplace_back(tu[a], tv[b]);
-          where.push_back(a * tv.size() + b);
+          cell.emplace_back(iu[a], iv[b]);
         }
-      }
+    }
     std::vector<SurfacePoint> fresh(missing.size());
     if (!missing.empty()) f_(missing, fresh);
     for (std::size_t k = 0; k < missing.size(); ++k) {
-      out[where[k]] = fresh[k];
-      values_.emplace(key(missing[k].x, missing[k].y), fresh[k]);
+      rows_[cell[k].first].value[cell[k].second] = fresh[k];
+      rows_[cell[k].first].known[cell[k].second] = 1;
     }
+    for (std::size_t a = 0; a < tu.size(); ++a)
+      for (std::size_t b = 0; b < tv.size(); ++b)
+        out[a * tv.size() + b] = rows_[iu[a]].value[iv[b]];
   }
 
  private:
-  struct Hash {
-    std::size_t operator()(const std::pair<int64_t, int64_t>& k) const {
-      return std::hash<int64_t>()(k.first * 1000003 ^ k.second);
-    }
+  struct Row {
+    std::vector<SurfacePoint> value;
+    std::vector<char> known;
   };
-  static std::pair<int64_t, int64_t> key(double u, double v) {
-    return {std::llround(std::ldexp(u, 40)), std::llround(std::ldexp(v, 40))};
+  static int index(std::map<int64_t, int>& m, double t) {
+    const auto [it, fresh] = m.emplace(std::llround(std::ldexp(t, 40)), static_cast<int>(m.size()));
+    return it->second;
   }
   const SurfaceFunction& f_;
-  std::unordered_map<std::pair<int64_t, int64_t>, SurfacePoint, Hash> values_;
+  std::map<int64_t, int> u_, v_;
+  std::vector<Row> rows_;
 };
 
 }  // namespace
+
+int fit_samples_per_span(int p, int spans) {
+  return 2 * spans + 1 >= p + 1 ? 2 : p;
+}
 
 CurveFit fit_curve(const CurveFunction& g, int p, const FitTolerance& tol) {
   CurveFit out;
   std::vector<double> U = uniform_knots(p, 1);
   while (true) {
-    const int per = per_span(p, U);
+    const int per = fit_samples_per_span(p, span_count(U));
     const std::size_t n = U.size() - p - 1;
     const Samples t = span_samples(U, per);
     std::vector<CurvePoint> G(t.t.size());
@@ -229,7 +236,8 @@ SurfaceFit fit_surface(const SurfaceFunction& f, const std::array<CadCurve, 4>& 
     // Samples and the least-squares problem for the interior points. With a full tensor grid of
     // samples, min |Nu X Nv^T - F| over the interior block separates: X_in = Nu_in^+ R Nv_in^+T
     // with R = F - Nu X_boundary Nv^T.
-    const int su = per_span(p, U), sv = per_span(q, V);
+    const int su = fit_samples_per_span(p, span_count(U)),
+              sv = fit_samples_per_span(q, span_count(V));
     const Samples tu = span_samples(U, su), tv = span_samples(V, sv);
     std::vector<SurfacePoint> F;
     cache.evaluate(tu.t, tv.t, F);

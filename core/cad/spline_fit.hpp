@@ -28,6 +28,10 @@ using SurfaceFunction = std::function<void(std::span<const Vec2>, std::span<Surf
 // Evaluates a curve (position and first derivative) at many t in [0, 1] at once.
 using CurveFunction = std::function<void(std::span<const double>, std::span<CurvePoint>)>;
 
+// Fit samples per knot span (in each direction) for degree p and `spans` spans: two where the
+// spans alone give enough equations, else p. The check grid has four times as many.
+int fit_samples_per_span(int p, int spans);
+
 struct CurveFit {
   CadCurve curve;
   double position_deviation = 0;  // largest at the check points

@@ -33,7 +33,9 @@ TEST(CadSpline, RefinementAndElevationKeepTheCurve) {
   EXPECT_EQ(e.degree, 5);
   // Every interior knot keeps its continuity (multiplicity 1 + 2).
   for (const KnotRun& k : knot_runs(e.knots)) {
-    if (k.value > 0 && k.value < 1) EXPECT_EQ(k.multiplicity, 3);
+    if (k.value > 0 && k.value < 1) {
+      EXPECT_EQ(k.multiplicity, 3);
+    }
   }
   for (int k = 0; k <= 40; ++k) {
     const double t = k / 40.0;
