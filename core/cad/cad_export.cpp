@@ -40,6 +40,13 @@ CadExportReport export_cad(const Scene& scene, const std::filesystem::path& targ
   const auto format = cad_format_for(target);
   if (!format)
     throw DataError(target.string(), "", "not a STEP or IGES file name (.step .stp .igs .iges)");
+  // Where the file cannot go at all, say so before the fits.
+  std::error_code ec;
+  if (std::filesystem::is_directory(target, ec))
+    throw DataError(target.string(), "", "is a directory, not a file");
+  const auto dir = target.parent_path().empty() ? std::filesystem::path(".") : target.parent_path();
+  if (!std::filesystem::is_directory(dir, ec))
+    throw DataError(target.string(), "", "cannot write: no directory " + dir.string());
   if (options.tolerance && !(*options.tolerance > 0 && std::isfinite(*options.tolerance)))
     throw DataError(options.source, "", "the tolerance must be a positive number");
   std::vector<CadPiece> pieces = cad_pieces(scene, options.scheme, options.source);

@@ -107,6 +107,7 @@ void write_cad_file(const SewnShape& shape, const CadModel& model, const std::st
       if (!probe) throw DataError(where, "", std::string("cannot write: ") + std::strerror(errno));
     }
     IFSelect_ReturnStatus status = IFSelect_RetFail;
+    errno = 0;  // OCCT's stream sets it when a write fails (ENOSPC on a full disk)
     if (format == CadFormat::Step) {
       STEPCAFControl_Controller::Init();
       // The schema must be set before the writer is constructed.
@@ -129,8 +130,12 @@ void write_cad_file(const SewnShape& shape, const CadModel& model, const std::st
         throw DataError(where, "", "OpenCASCADE could not translate the shape to IGES");
       status = writer.Write(tmp.c_str()) ? IFSelect_RetDone : IFSelect_RetFail;
     }
-    if (status != IFSelect_RetDone)
-      throw DataError(where, "", "writing failed (disk full or file not writable)");
+    if (status != IFSelect_RetDone) {
+      const int reason = errno;
+      throw DataError(where, "",
+                      std::string("writing failed: ") +
+                          (reason ? std::strerror(reason) : "OpenCASCADE's writer gave up"));
+    }
   });
 }
 
