@@ -135,7 +135,10 @@ CadModel build_cad_model(std::vector<CadPiece> pieces, const CadModelOptions& op
         c = p.exact->boundary(s);
       else if (!p.exact)
         c = p.known_sides[s], any_fitted = true;
-      if (c && !exact) exact = G.reversed[k] ? c->reversed() : *c;
+      // The simplest exact form among them (they are the same curve).
+      if (c && (!exact || c->degree < exact->degree ||
+                (c->degree == exact->degree && c->points.size() < exact->points.size())))
+        exact = G.reversed[k] ? c->reversed() : *c;
     }
     if (!any_fitted) continue;
     if (exact) {

@@ -33,6 +33,30 @@ BezierCurve sub_curve(const BezierCurve& c, double t0, double t1) {
   return t0 <= t1 ? part : part.reversed();
 }
 
+// The curve of the lowest degree that is exactly `c` (a degree-elevated curve, such as a cubic
+// network edge on a quartic Gregory triangle side, is reduced back): reduced while elevating the
+// reduction gives the control points again, to rounding.
+BezierCurve lowest_degree(const BezierCurve& c) {
+  BezierCurve best = c;
+  while (best.degree() > 1) {
+    const std::vector<Vec3>& P = best.control_points();
+    const int n = best.degree();
+    std::vector<Vec3> Q(
+        n);  // the inverse of elevation from the start: P_i = (i Q_{i-1} + (n-i) Q_i) / n
+    Q[0] = P[0];
+    for (int i = 1; i < n; ++i) Q[i] = (double(n) * P[i] - double(i) * Q[i - 1]) / double(n - i);
+    double size = 0, err = 0;
+    for (const Vec3& p : P) size = std::max(size, glm::length(p - P[0]));
+    const BezierCurve elevated = BezierCurve(Q).elevated();
+    const std::vector<Vec3>& E = elevated.control_points();
+    for (int i = 0; i <= n; ++i) err = std::max(err, glm::length(E[i] - P[i]));
+    if (!(err <= 1e-13 * size)) break;
+    Q.back() = P.back();  // the end point exactly
+    best = BezierCurve(std::move(Q));
+  }
+  return best;
+}
+
 // The domain side a segment [a, b] lies on, with its side parameters; nullopt if none.
 struct OnSide {
   int side;
@@ -62,8 +86,9 @@ void add_split_pieces(const std::shared_ptr<const Patch>& patch, const std::stri
                       std::vector<CadPiece>& out) {
   const std::vector<DomainQuad> quads = split_into_quads(domain_polygon(patch->domain()));
   const bool exact_sides = exact_boundary_curves(*patch);
-  const std::vector<BezierCurve> curves =
-      exact_sides ? patch->boundary_curves() : std::vector<BezierCurve>{};
+  std::vector<BezierCurve> curves;
+  if (exact_sides)
+    for (const BezierCurve& c : patch->boundary_curves()) curves.push_back(lowest_degree(c));
   int degree = 3;
   for (const BezierCurve& c : curves) degree = std::max(degree, c.degree());
   for (std::size_t k = 0; k < quads.size(); ++k) {
