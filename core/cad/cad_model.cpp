@@ -1,7 +1,5 @@
 #include "core/cad/cad_model.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <cmath>
 #include <exception>

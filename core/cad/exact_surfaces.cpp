@@ -178,14 +178,4 @@ std::optional<CadSurface> exact_surface(const Patch& patch) {
   return std::nullopt;
 }
 
-double exact_deviation(const CadSurface& s, const std::function<Vec3(Vec2)>& f, int k) {
-  double worst = 0;
-  for (int a = 0; a <= k; ++a)
-    for (int b = 0; b <= k; ++b) {
-      const Vec2 x(double(a) / k, double(b) / k);
-      worst = std::max(worst, glm::length(s.evaluate(x.x, x.y).p - f(x)));
-    }
-  return worst;
-}
-
 }  // namespace pl

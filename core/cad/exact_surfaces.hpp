@@ -36,7 +36,4 @@ CadSurface join_bezier_cells(int cells_u, int cells_v, const std::vector<BezierP
 // decided by the piece builder (cad_pieces.hpp).
 std::optional<CadSurface> exact_surface(const Patch& patch);
 
-// Largest |S_cad - patch| over a grid of (k + 1)^2 parameters: the check of a claimed exact form.
-double exact_deviation(const CadSurface& s, const std::function<Vec3(Vec2)>& f, int k);
-
 }  // namespace pl

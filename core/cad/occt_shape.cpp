@@ -6,10 +6,8 @@
 #include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
-#include <BRepLProp_SLProps.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
-#include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <Precision.hxx>
 #include <ShapeAnalysis_Surface.hxx>
 #include <TColStd_Array1OfInteger.hxx>
