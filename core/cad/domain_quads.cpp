@@ -52,7 +52,18 @@ void check_quad(const DomainQuad& q) {
   }
 }
 
-void split_convex(const std::vector<Vec2>& P, bool keep_quads, std::vector<DomainQuad>& out) {
+// Corners of a polygon split centrally stay below this (interior angle, degrees).
+constexpr double kMaxCornerDeg = 150;
+
+// Interior angle's supplement at vertex i: the turn in degrees (positive: convex).
+double turn_deg(const std::vector<Vec2>& P, std::size_t i) {
+  const std::size_t n = P.size();
+  const Vec2 a = P[(i + n - 1) % n], b = P[i], c = P[(i + 1) % n];
+  return std::atan2(cross2(b - a, c - b), glm::dot(b - a, c - b)) * 180 / M_PI;
+}
+
+void split_convex(const std::vector<Vec2>& P, bool keep_quads, std::vector<DomainQuad>& out,
+                  bool ring = true) {
   const std::size_t n = P.size();
   if (n == 4 && keep_quads) {
     out.push_back({P[0], P[1], P[2], P[3]});
@@ -60,6 +71,26 @@ void split_convex(const std::vector<Vec2>& P, bool keep_quads, std::vector<Domai
     return;
   }
   const Vec2 c = area_centroid(P);
+  // Corners close to straight (many sides) would make central pieces with corners close to 180
+  // degrees, where a fit's normal is ill-conditioned next to a singular patch corner: a ring of
+  // pieces first (two per side, between the side and the polygon shrunk halfway to the centroid,
+  // which halves every corner), then the inner polygon split centrally.
+  double max_turn_deg = 0;
+  for (std::size_t i = 0; i < n; ++i) max_turn_deg = std::max(max_turn_deg, 180 - turn_deg(P, i));
+  if (ring && max_turn_deg > kMaxCornerDeg + 1e-6) {
+    std::vector<Vec2> W;
+    for (const Vec2& p : P) W.push_back(c + 0.5 * (p - c));
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t j = (i + 1) % n;
+      const Vec2 m = 0.5 * (P[i] + P[j]), w = 0.5 * (W[i] + W[j]);
+      out.push_back({P[i], m, w, W[i]});
+      check_quad(out.back());
+      out.push_back({m, P[j], W[j], w});
+      check_quad(out.back());
+    }
+    split_convex(W, false, out, false);
+    return;
+  }
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2 next = 0.5 * (P[i] + P[(i + 1) % n]), prev = 0.5 * (P[(i + n - 1) % n] + P[i]);
     out.push_back({P[i], next, c, prev});

@@ -1,9 +1,12 @@
 // Splits a patch's polygonal parameter domain into convex quadrilaterals, each the domain of
 // one four-sided surface piece (bilinearly mapped from the unit square). A convex quadrilateral
 // stays whole; any other convex polygon is split centrally (corner i: vertex i, the midpoint of
-// the side leaving it, the centroid, the midpoint of the side arriving); a concave polygon is
-// first cut from each reflex vertex along its angle bisector to the boundary, and every convex
-// part is then split centrally, so that parts sharing a cut also share its midpoint.
+// the side leaving it, the centroid, the midpoint of the side arriving), after a ring of two
+// pieces per side (between the side and the polygon shrunk halfway to the centroid) where a
+// corner exceeds 150 degrees (13 sides and more), so that no piece has a corner that flat; a
+// concave polygon is first cut from each reflex vertex along its angle bisector to the boundary,
+// and every convex part is then split centrally, so that parts sharing a cut also share its
+// midpoint.
 #pragma once
 
 #include <array>
