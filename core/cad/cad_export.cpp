@@ -62,13 +62,16 @@ CadExportReport export_cad(const Scene& scene, const std::filesystem::path& targ
     throw DataError(options.source, "", std::string("cannot export: ") + e.what());
   }
   for (const CadFace& f : model.faces)
-    if (!f.converged)
+    if (!f.converged) {
+      // Only the position tolerance is an option; say which one failed.
+      const bool position = f.position_deviation > model.tolerance;
       throw DataError(options.source, f.name,
                       "the fit did not reach the tolerance " + format_number(model.tolerance) +
                           " / " + format_number(model.normal_tolerance_deg) + " deg (deviation " +
                           format_number(f.position_deviation) + ", " +
-                          format_number(f.normal_deviation_deg) +
-                          " deg); try a larger --tolerance");
+                          format_number(f.normal_deviation_deg) + " deg)" +
+                          (position ? "; try a larger --tolerance" : ""));
+    }
   CadExportReport r;
   r.format = *format;
   r.target = target;
