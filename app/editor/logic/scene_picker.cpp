@@ -1,0 +1,152 @@
+#include "app/editor/logic/scene_picker.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace pl {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// A curve lies on the surfaces it bounds, but they are drawn as chords of the exact surface:
+// a curve point up to this many pixels (in world size at its depth) behind the surface hit
+// still counts as visible. The renderer pulls curves forward for the same reason.
+constexpr double kCurveDepthSlackPx = 4.0;
+
+// Distance from p to the segment ab in the plane, and the parameter of the nearest point.
+std::pair<double, double> segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 d = b - a;
+  const double len2 = glm::dot(d, d);
+  const double s = len2 > 0 ? std::clamp(glm::dot(p - a, d) / len2, 0.0, 1.0) : 0.0;
+  return {glm::length(p - (a + s * d)), s};
+}
+
+Box bounds_of(std::span<const Vec3> points) {
+  Box b;
+  for (const Vec3& p : points) b.add(p);
+  return b;
+}
+
+}  // namespace
+
+std::vector<SelectionItem> surface_items(const SceneSurfaces& surfaces) {
+  std::vector<SelectionItem> items;
+  items.reserve(surfaces.surfaces.size());
+  for (const SceneSurface& s : surfaces.surfaces)
+    items.push_back(s.face >= 0 ? SelectionItem::face(s.face) : SelectionItem::patch(s.patch));
+  return items;
+}
+
+void ScenePicker::refresh(std::span<const SurfaceMesh> meshes) {
+  cache_.resize(meshes.size());
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    const SurfaceMesh& m = meshes[i];
+    Entry& e = cache_[i];
+    if (e.mesh == &m && e.revision == m.revision && e.vertices == m.positions.size() &&
+        e.triangles == m.triangles.size())
+      continue;
+    e.mesh = &m;
+    e.revision = m.revision;
+    e.vertices = m.positions.size();
+    e.triangles = m.triangles.size();
+    e.box = bounds_of(m.positions);
+    e.bvh.reset();
+  }
+}
+
+std::optional<SurfaceHit> ScenePicker::cast(std::span<const SurfaceMesh> meshes, const Ray& ray) {
+  refresh(meshes);
+  // The boxes the ray enters, nearest entry first.
+  std::vector<std::pair<double, int>> entered;
+  for (std::size_t i = 0; i < cache_.size(); ++i)
+    if (const auto t = intersect_box(ray, cache_[i].box, kInfinity))
+      entered.emplace_back((*t)[0], static_cast<int>(i));
+  std::sort(entered.begin(), entered.end());
+  std::optional<SurfaceHit> best;
+  double t_max = kInfinity;
+  for (const auto& [t_enter, i] : entered) {
+    if (t_enter >= t_max) break;  // every further box starts behind the hit
+    Entry& e = cache_[i];
+    const SurfaceMesh& m = meshes[i];
+    if (!e.bvh) e.bvh = std::make_unique<TriangleBvh>(m.positions, m.triangles);
+    if (const auto h = e.bvh->intersect(ray, m.positions, m.triangles, t_max)) {
+      t_max = h->t;
+      best = SurfaceHit{i, *h, ray.origin + h->t * ray.direction};
+    }
+  }
+  return best;
+}
+
+PickResult ScenePicker::pick(const PickScene& scene, const Camera& camera, const ViewRect& rect,
+                             const Vec2& pixel, const PickOptions& options) {
+  PickResult r;
+  const Ray ray = window_ray(camera, rect, pixel);
+  r.surface = cast(scene.meshes, ray);
+
+  if (options.points && scene.points) {
+    const ScenePoints& pts = *scene.points;
+    // Editable points first: a derived point next to a vertex must not block grabbing it.
+    r.point =
+        pick_point(camera, rect, pts.positions, pts.editable(), pixel, options.point_radius_px);
+    if (r.point >= 0) {
+      r.item = SelectionItem::of_point(*pts.refs[r.point]);
+    } else {
+      r.point = pick_point(camera, rect, pts.positions, {}, pixel, options.point_radius_px);
+      r.derived_point = r.point >= 0;
+    }
+  }
+
+  if (options.curves) {
+    const double surface_t = r.surface ? r.surface->hit.t : kInfinity;
+    double best = options.curve_radius_px;
+    for (std::size_t e = 0; e < scene.curves.size(); ++e) {
+      const Polyline& line = scene.curves[e];
+      if (line.size() < 2) continue;
+      // Cull: the ray must pass within the pick radius (in world size at the far side of the
+      // curve's box) of the box.
+      Box box = bounds_of(line);
+      const double margin =
+          options.curve_radius_px *
+          world_per_pixel(camera, rect, box.centre() + box.radius() * camera.forward());
+      box.lo -= Vec3(margin);
+      box.hi += Vec3(margin);
+      if (!intersect_box(ray, box, kInfinity)) continue;
+      std::optional<Vec2> a = project_to_window(camera, rect, line[0]);
+      for (std::size_t k = 1; k < line.size(); ++k) {
+        const std::optional<Vec2> b = project_to_window(camera, rect, line[k]);
+        if (a && b) {
+          const auto [d, s] = segment_distance(pixel, *a, *b);
+          if (d < best) {
+            const Vec3 p = line[k - 1] + s * (line[k] - line[k - 1]);
+            const double depth = glm::dot(p - ray.origin, ray.direction);
+            const double slack = kCurveDepthSlackPx * world_per_pixel(camera, rect, p);
+            if (depth <= surface_t + slack) {
+              best = d;
+              r.edge = static_cast<int>(e);
+            }
+          }
+        }
+        a = b;
+      }
+    }
+  }
+
+  if (!r.item && r.edge >= 0) r.item = SelectionItem::edge(r.edge);
+  if (!r.item && r.surface && r.surface->surface < int(scene.surface_items.size()))
+    r.item = scene.surface_items[r.surface->surface];
+  return r;
+}
+
+ScenePicker::Stats ScenePicker::stats() const {
+  Stats s;
+  s.surfaces = cache_.size();
+  for (const Entry& e : cache_)
+    if (e.bvh) {
+      ++s.hierarchies;
+      s.memory_bytes += e.bvh->memory_bytes();
+    }
+  return s;
+}
+
+}  // namespace pl
