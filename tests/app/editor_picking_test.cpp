@@ -156,6 +156,26 @@ TEST(EditorPicking, PointsFirstThenCurvesThenSurfaces) {
   EXPECT_EQ(r.edge, -1);
 }
 
+TEST(EditorPicking, FindsAPixelThatSelectsAFaceOrEdge) {
+  const LiveSurfaces live(default_scene(), 24, std::nullopt, "default");
+  std::vector<SelectionItem> items;
+  const PickScene scene = pick_scene(live, items);
+  const Camera c = framing(live.draw());
+  ScenePicker picker;
+  std::vector<SelectionItem> wanted{SelectionItem::face(0), SelectionItem::face(1)};
+  for (int e = 0; e < int(live.draw().network_curves.size()); ++e)
+    wanted.push_back(SelectionItem::edge(e));
+  for (const SelectionItem& item : wanted) {
+    const auto px = find_pixel_for(picker, scene, c, kRect, item);
+    ASSERT_TRUE(px) << describe(item);
+    const PickResult r = picker.pick(scene, c, kRect, *px);
+    EXPECT_EQ(r.item, item);
+    EXPECT_EQ(r.point, -1);  // no point lies there to grab instead
+  }
+  EXPECT_FALSE(find_pixel_for(picker, scene, c, kRect, SelectionItem::face(7)));
+  EXPECT_FALSE(find_pixel_for(picker, scene, c, kRect, SelectionItem::edge(70)));
+}
+
 TEST(EditorPicking, CurvesBehindASurfaceAreNotPicked) {
   // A closed cube-sphere: every curve on the back passes under some front surface pixel.
   Scene s;

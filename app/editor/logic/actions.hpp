@@ -104,9 +104,10 @@ struct Action {
   std::string id;    // "file.new": stable, for tests and scripts
   std::string menu;  // menu path, "/"-separated ("Face/Scheme"); empty: no menu entry
   std::string label;
-  std::vector<KeyChord> keys;  // the first is shown in menus; all are bound
-  std::string keys_text;       // shown in F1 instead of the keys, when set ("Arrows")
-  std::string help;            // one line for F1
+  std::function<std::string()> detail;  // shown after the label in menus ("Undo" "move vertex 2")
+  std::vector<KeyChord> keys;           // the first is shown in menus; all are bound
+  std::string keys_text;                // shown in F1 instead of the keys, when set ("Arrows")
+  std::string help;                     // one line for F1
   bool separator_before = false;
   ContextSet context = 0;         // where the right-click menu offers it
   std::function<bool()> enabled;  // null: always

@@ -138,6 +138,44 @@ PickResult ScenePicker::pick(const PickScene& scene, const Camera& camera, const
   return r;
 }
 
+std::optional<Vec2> find_pixel_for(ScenePicker& picker, const PickScene& scene,
+                                   const Camera& camera, const ViewRect& rect,
+                                   const SelectionItem& item, const PickOptions& options) {
+  // Candidate points: the curve's samples, or the centres of the surfaces' triangles.
+  std::vector<Vec3> candidates;
+  if (item.kind == SelectionItem::Kind::Edge) {
+    if (item.index < 0 || item.index >= int(scene.curves.size())) return std::nullopt;
+    const Polyline& line = scene.curves[item.index];
+    for (std::size_t k = 1; k + 1 < line.size(); ++k) candidates.push_back(line[k]);
+  } else {
+    for (std::size_t s = 0; s < scene.meshes.size() && s < scene.surface_items.size(); ++s) {
+      if (scene.surface_items[s] != item) continue;
+      const SurfaceMesh& m = scene.meshes[s];
+      for (const auto& t : m.triangles)
+        candidates.push_back((m.positions[t[0]] + m.positions[t[1]] + m.positions[t[2]]) / 3.0);
+    }
+  }
+  std::vector<Vec2> pixels;
+  Vec2 middle(0);
+  for (const Vec3& p : candidates)
+    if (const auto px = project_to_window(camera, rect, p); px && rect.contains(*px)) {
+      pixels.push_back(*px);
+      middle += *px;
+    }
+  if (pixels.empty()) return std::nullopt;
+  middle /= double(pixels.size());
+  std::sort(pixels.begin(), pixels.end(), [&](const Vec2& a, const Vec2& b) {
+    return glm::length(a - middle) < glm::length(b - middle);
+  });
+  // Nearest the middle first; a few hundred tries are plenty (each is a full pick).
+  const std::size_t stride = std::max<std::size_t>(1, pixels.size() / 400);
+  for (std::size_t i = 0; i < pixels.size(); i += stride) {
+    const PickResult r = picker.pick(scene, camera, rect, pixels[i], options);
+    if (r.item == item && r.point < 0) return pixels[i];
+  }
+  return std::nullopt;
+}
+
 ScenePicker::Stats ScenePicker::stats() const {
   Stats s;
   s.surfaces = cache_.size();

@@ -85,4 +85,12 @@ class ScenePicker {
   std::vector<Entry> cache_;
 };
 
+// A window pixel where a click selects `item` (a face, patch or edge): over the face's surface
+// or on the edge's curve, with no point under the cursor, nearest to the middle of what is
+// visible of it. nullopt when nothing of it can be clicked in this view. Scripts and the
+// end-to-end test use it to click a face like a user would.
+std::optional<Vec2> find_pixel_for(ScenePicker& picker, const PickScene& scene,
+                                   const Camera& camera, const ViewRect& rect,
+                                   const SelectionItem& item, const PickOptions& options = {});
+
 }  // namespace pl
