@@ -48,7 +48,7 @@ PickData pick_data(const Scene& scene, int density) {
 }
 
 struct Figures {
-  double first_ms = 0, mean_ms = 0, brute_ms = 0;
+  double first_ms = 0, mean_ms = 0, surface_ms = 0, brute_ms = 0;
   std::size_t triangles = 0, hits = 0, hierarchies = 0, memory = 0;
 };
 
@@ -76,6 +76,9 @@ Figures measure(const PickData& d, bool brute_force) {
   t0 = Clock::now();
   for (const Vec2& p : pixels) f.hits += picker.pick(scene, camera, rect, p).item.has_value();
   f.mean_ms = ms_since(t0) / double(pixels.size());
+  t0 = Clock::now();
+  for (const Vec2& p : pixels) picker.cast(d.meshes, window_ray(camera, rect, p));
+  f.surface_ms = ms_since(t0) / double(pixels.size());
   if (brute_force) {
     constexpr int kRays = 8;
     t0 = Clock::now();
@@ -110,9 +113,10 @@ int run_pick_benchmark(const std::optional<std::filesystem::path>& file, std::os
   const Figures l = measure(data, true);
   char line[256];
   std::snprintf(line, sizeof line,
-                "# density %d; %zu surfaces, %zu triangles; %zu of 336 picks hit something; "
-                "%zu hierarchies built\n",
-                density, data.meshes.size(), l.triangles, l.hits, l.hierarchies);
+                "# density %d; %zu surfaces, %zu triangles, %zu points, %zu curves; %zu of 336 "
+                "picks hit something; %zu hierarchies built\n",
+                density, data.meshes.size(), l.triangles, data.points.positions.size(),
+                data.curves.size(), l.hits, l.hierarchies);
   out << line;
   std::snprintf(line, sizeof line, "figure pick_first_ms %.3f ms\n", l.first_ms);
   out << line;
@@ -120,6 +124,9 @@ int run_pick_benchmark(const std::optional<std::filesystem::path>& file, std::os
   out << line;
   std::snprintf(line, sizeof line, "figure pick_ms_%zu_faces %.4f ms\n", data.meshes.size(),
                 l.mean_ms);
+  out << line;
+  std::snprintf(line, sizeof line, "figure pick_surface_ms_%zu_faces %.4f ms\n", data.meshes.size(),
+                l.surface_ms);
   out << line;
   std::snprintf(line, sizeof line, "figure pick_every_triangle_ms %.3f ms\n", l.brute_ms);
   out << line;

@@ -83,17 +83,43 @@ PickResult ScenePicker::pick(const PickScene& scene, const Camera& camera, const
   PickResult r;
   const Ray ray = window_ray(camera, rect, pixel);
   r.surface = cast(scene.meshes, ray);
+  const WindowProjector project(camera, rect);
+  const Vec3 eye = camera.eye(), forward = camera.forward();
+  // World size of a pixel at depth z along the view (constant for orthographic views).
+  const double pixel_per_depth = 2 * std::tan(0.5 * camera.fov_y) / rect.height;
+  auto world_per_px = [&](double z) {
+    return camera.orthographic ? pixel_per_depth * camera.distance : pixel_per_depth * z;
+  };
+  // Whether p may lie within `radius_px` of the cursor: its distance to the ray against the
+  // radius at its distance along the ray, which is at least its depth (a cheap test that
+  // spares projecting points far from the cursor).
+  auto near_ray = [&](const Vec3& p, double radius_px) {
+    const Vec3 w = p - ray.origin;
+    const double t = glm::dot(w, ray.direction);
+    const double reach = 1.5 * radius_px * world_per_px(std::max(t, 0.0)) + 1e-12;
+    return glm::dot(w, w) - t * t <= reach * reach || t <= 0;
+  };
 
   if (options.points && scene.points) {
     const ScenePoints& pts = *scene.points;
-    // Editable points first: a derived point next to a vertex must not block grabbing it.
-    r.point =
-        pick_point(camera, rect, pts.positions, pts.editable(), pixel, options.point_radius_px);
-    if (r.point >= 0) {
+    // Editable points first: a derived point next to a vertex must not block grabbing it. One
+    // pass keeps the best of each kind.
+    NearestPoint editable, derived;
+    for (std::size_t i = 0; i < pts.positions.size(); ++i) {
+      const Vec3& p = pts.positions[i];
+      if (!camera.orthographic && !near_ray(p, options.point_radius_px)) continue;
+      const auto s = project(p);
+      if (!s) continue;
+      const double d = glm::length(*s - pixel);
+      if (d > options.point_radius_px) continue;
+      (pts.refs[i] ? editable : derived).offer(static_cast<int>(i), d, glm::dot(p - eye, forward));
+    }
+    if (editable.index >= 0) {
+      r.point = editable.index;
       r.item = SelectionItem::of_point(*pts.refs[r.point]);
-    } else {
-      r.point = pick_point(camera, rect, pts.positions, {}, pixel, options.point_radius_px);
-      r.derived_point = r.point >= 0;
+    } else if (derived.index >= 0) {
+      r.point = derived.index;
+      r.derived_point = true;
     }
   }
 
@@ -106,21 +132,20 @@ PickResult ScenePicker::pick(const PickScene& scene, const Camera& camera, const
       // Cull: the ray must pass within the pick radius (in world size at the far side of the
       // curve's box) of the box.
       Box box = bounds_of(line);
-      const double margin =
-          options.curve_radius_px *
-          world_per_pixel(camera, rect, box.centre() + box.radius() * camera.forward());
+      const double far = glm::dot(box.centre() - eye, forward) + box.radius();
+      const double margin = options.curve_radius_px * world_per_px(std::max(far, 0.0));
       box.lo -= Vec3(margin);
       box.hi += Vec3(margin);
       if (!intersect_box(ray, box, kInfinity)) continue;
-      std::optional<Vec2> a = project_to_window(camera, rect, line[0]);
+      std::optional<Vec2> a = project(line[0]);
       for (std::size_t k = 1; k < line.size(); ++k) {
-        const std::optional<Vec2> b = project_to_window(camera, rect, line[k]);
+        const std::optional<Vec2> b = project(line[k]);
         if (a && b) {
           const auto [d, s] = segment_distance(pixel, *a, *b);
           if (d < best) {
             const Vec3 p = line[k - 1] + s * (line[k] - line[k - 1]);
             const double depth = glm::dot(p - ray.origin, ray.direction);
-            const double slack = kCurveDepthSlackPx * world_per_pixel(camera, rect, p);
+            const double slack = kCurveDepthSlackPx * world_per_px(glm::dot(p - eye, forward));
             if (depth <= surface_t + slack) {
               best = d;
               r.edge = static_cast<int>(e);
