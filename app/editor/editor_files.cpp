@@ -28,6 +28,7 @@ fs::path Editor::browse_start_dir() const {
 
 void Editor::new_scene() {
   session_.new_scene();
+  work_plane_.shown = true;  // an empty view shows where new points will go
   status_.say("new scene");
 }
 

@@ -2,6 +2,8 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+
 namespace pl {
 
 void draw_status_bar(const StatusLine& status, const StatusFigures& f, float s) {
@@ -43,13 +45,22 @@ void draw_help_window(bool* open, const ActionRegistry& actions, float s) {
     ImGui::End();
     return;
   }
-  if (ImGui::BeginTable("help", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
-    for (const HelpRow& r : help_rows(actions, mouse_help())) {
+  const std::vector<HelpRow> rows = help_rows(actions, mouse_help());
+  // The keys column as wide as its widest entry; the descriptions wrap in what is left.
+  float keys_width = 0;
+  for (const HelpRow& r : rows)
+    keys_width = std::max(keys_width, ImGui::CalcTextSize(r.keys.c_str()).x);
+  if (ImGui::BeginTable("help", 2, ImGuiTableFlags_RowBg)) {
+    ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed, keys_width);
+    ImGui::TableSetupColumn("what", ImGuiTableColumnFlags_WidthStretch);
+    for (const HelpRow& r : rows) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(r.keys.c_str());
       ImGui::TableNextColumn();
-      ImGui::TextDisabled("%s", r.what.c_str());
+      ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+      ImGui::TextWrapped("%s", r.what.c_str());
+      ImGui::PopStyleColor();
     }
     ImGui::EndTable();
   }

@@ -17,11 +17,11 @@ namespace pl {
 
 namespace {
 
-// The selection in the accent colour; what is under the cursor in a light neutral, so the two
-// never look alike; the grid faint, its axes in the axis triad's colours.
+// The selection in the accent colour; what is under the cursor (what a click would select) in a
+// fainter tint of it and white lines; the grid faint, its axes in the axis triad's colours.
 constexpr std::array<float, 4> kSelectedTint = {kAccent[0], kAccent[1], kAccent[2], 0.30f};
 constexpr std::array<float, 4> kSelectedLine = {kAccent[0], kAccent[1], kAccent[2], 1.0f};
-constexpr std::array<float, 4> kHoverTint = {1.0f, 1.0f, 1.0f, 0.12f};
+constexpr std::array<float, 4> kHoverTint = {kAccent[0], kAccent[1], kAccent[2], 0.13f};
 constexpr std::array<float, 4> kHoverLine = {1.0f, 1.0f, 1.0f, 0.85f};
 constexpr std::array<float, 4> kGridLine = {0.42f, 0.44f, 0.50f, 0.55f};
 // Grid cells across the view's height, and how far the grid reaches (in cells from its centre).
@@ -111,8 +111,10 @@ void ViewportPainter::update_guides(const ViewportFrame& f, int panel) {
     const Camera& c = *f.camera;
     const PlaneFrame plane = f.work_plane->frame(c);
     const double step = grid_step(2 * c.half_height(), kGridCellsPerView);
-    g.grid.set(grid_segments(plane, c.target, step, kGridHalfCells), {});
-    const double reach = kGridHalfCells * step;
+    // Within the clipping planes, which hug the scene (2 scene radii about the target).
+    const int half_cells = std::clamp(int(1.8 * c.scene_radius / step), 1, kGridHalfCells);
+    g.grid.set(grid_segments(plane, c.target, step, half_cells), {});
+    const double reach = half_cells * step;
     const Vec2 centre = plane_coordinates(plane, c.target);
     // The plane's own axes through its origin (a view-aligned plane has none worth showing).
     std::vector<Vec3> u, v;

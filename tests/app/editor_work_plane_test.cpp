@@ -91,7 +91,7 @@ TEST(EditorWorkPlane, GridStepsAreNiceAndLinesLieOnThePlane) {
   const PlaneFrame f = w.frame(c);
   const double step = 0.25;
   const auto segs = grid_segments(f, Vec3(1.13, 7, -0.4), step, 4);
-  ASSERT_EQ(segs.size(), 2u * 2 * 9);
+  ASSERT_EQ(segs.size(), 2u * 2 * 9 * 8);  // 9 lines each way, 8 cells long, 2 ends a segment
   for (const Vec3& p : segs) {
     EXPECT_NEAR(glm::dot(p - f.origin, f.normal), 0, 1e-15);
     // On multiples of the step from the origin, in both plane coordinates.

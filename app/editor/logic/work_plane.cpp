@@ -68,16 +68,17 @@ std::vector<Vec3> grid_segments(const PlaneFrame& f, const Vec3& centre, double 
   if (!(step > 0) || half_cells <= 0) return s;
   const Vec2 c = plane_coordinates(f, centre);
   const double cu = std::round(c.x / step) * step, cv = std::round(c.y / step) * step;
-  const double extent = half_cells * step;
   auto at = [&](double a, double b) { return f.origin + a * f.u + b * f.v; };
-  s.reserve(8 * half_cells + 4);
-  for (int i = -half_cells; i <= half_cells; ++i) {
-    const double a = cu + i * step, b = cv + i * step;
-    s.push_back(at(a, cv - extent));
-    s.push_back(at(a, cv + extent));
-    s.push_back(at(cu - extent, b));
-    s.push_back(at(cu + extent, b));
-  }
+  s.reserve(std::size_t(8) * half_cells * (2 * half_cells + 1));
+  for (int i = -half_cells; i <= half_cells; ++i)
+    for (int j = -half_cells; j < half_cells; ++j) {
+      // One segment per cell side: the renderer drops a segment with an end behind the eye,
+      // so long lines through the view would vanish whole.
+      s.push_back(at(cu + i * step, cv + j * step));
+      s.push_back(at(cu + i * step, cv + (j + 1) * step));
+      s.push_back(at(cu + j * step, cv + i * step));
+      s.push_back(at(cu + (j + 1) * step, cv + i * step));
+    }
   return s;
 }
 

@@ -22,7 +22,8 @@ struct PlaneFrame {
 };
 
 struct WorkPlane {
-  WorkPlaneKind kind = WorkPlaneKind::View;
+  // The ground plane by default (the world is z-up), as CAD tools start.
+  WorkPlaneKind kind = WorkPlaneKind::XY;
   Vec3 origin{0.0};
   bool shown = false;  // the grid is drawn
 
@@ -41,9 +42,10 @@ std::optional<Vec3> intersect_plane_ahead(const Ray& ray, const PlaneFrame& plan
 // The nice grid step (1, 2 or 5 times a power of ten) closest above `world_size / cells`.
 double grid_step(double world_size, int cells);
 
-// Grid lines of `frame` as segment end points (pairs), `2 * half_cells` cells of `step` across,
-// centred on the grid point nearest to `centre` projected onto the plane (lines stay on
-// multiples of the step from the origin, so the grid does not swim as the view moves).
+// Grid lines of `frame` as segment end points (pairs, one per cell side), `2 * half_cells` cells
+// of `step` across, centred on the grid point nearest to `centre` projected onto the plane
+// (lines stay on multiples of the step from the origin, so the grid does not swim as the view
+// moves).
 std::vector<Vec3> grid_segments(const PlaneFrame& frame, const Vec3& centre, double step,
                                 int half_cells);
 
