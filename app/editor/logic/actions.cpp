@@ -85,6 +85,23 @@ std::optional<KeyChord> parse_chord(const std::string& text) {
   }
 }
 
+Action make_action(std::string id, std::string menu, std::string label,
+                   const std::vector<std::string>& keys, std::string help,
+                   std::function<void()> run) {
+  Action a;
+  a.id = std::move(id);
+  a.menu = std::move(menu);
+  a.label = std::move(label);
+  for (const std::string& k : keys) {
+    const auto chord = parse_chord(k);
+    if (!chord) throw std::invalid_argument("action " + a.id + ": no such key \"" + k + "\"");
+    a.keys.push_back(*chord);
+  }
+  a.help = std::move(help);
+  if (run) a.run = [run = std::move(run)](const std::optional<KeyChord>&) { run(); };
+  return a;
+}
+
 void ActionRegistry::add(Action action) {
   if (action.id.empty() || find(action.id))
     throw std::invalid_argument("action id empty or used twice: \"" + action.id + "\"");

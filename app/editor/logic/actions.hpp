@@ -116,6 +116,12 @@ struct Action {
   std::function<void(const std::optional<KeyChord>& chord)> run;
 };
 
+// An action from its usual fields; `keys` as text ("Ctrl+S"; each must parse, else
+// std::invalid_argument), `run` ignoring which key triggered it.
+Action make_action(std::string id, std::string menu, std::string label,
+                   const std::vector<std::string>& keys, std::string help,
+                   std::function<void()> run);
+
 class ActionRegistry {
  public:
   // Throws std::invalid_argument for a duplicate id or a missing run function.

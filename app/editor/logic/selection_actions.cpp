@@ -39,12 +39,9 @@ std::vector<int> existing(const Scene& scene, const Selection& selection, Kind k
 void add_scheme_action(ActionRegistry& actions, Document& doc, Selection& selection,
                        FaceScheme scheme, const std::string& help) {
   const std::string name = scheme_name(scheme);
-  Action a;
-  a.id = "face.scheme." + name;
-  std::transform(a.id.begin(), a.id.end(), a.id.begin(), ::tolower);
-  a.menu = "Face/Scheme";
-  a.label = name;
-  a.help = help;
+  std::string id = "face.scheme." + name;
+  std::transform(id.begin(), id.end(), id.begin(), ::tolower);
+  Action a = make_action(id, "Face/Scheme", name, {}, help, nullptr);
   a.context = context_bit(ContextTarget::Face);
   // Gregory fills only triangles and quads: offered when every selected face is one.
   a.enabled = [&doc, &selection, scheme] {
@@ -89,75 +86,67 @@ void add_selection_actions(ActionRegistry& actions, Document& doc, Selection& se
     };
   };
 
-  Action all;
-  all.id = "select.all";
-  all.menu = "Select";
-  all.label = "All Points";
-  all.keys = {*parse_chord("Ctrl+A")};
-  all.help = "select every network vertex and explicit patch point";
-  all.context = context_bit(ContextTarget::Empty);
-  all.run = [&doc, &selection](const std::optional<KeyChord>&) {
-    std::vector<SelectionItem> items;
-    const Scene& s = doc.scene();
-    if (s.network)
-      for (std::size_t v = 0; v < s.network->vertices.size(); ++v)
-        items.push_back(SelectionItem::of_point(PointRef::vertex(int(v))));
-    for (std::size_t p = 0; p < s.patches.size(); ++p)
-      for (std::size_t k = 0; k < s.patches[p].patch->size(); ++k)
-        items.push_back(SelectionItem::of_point(PointRef::patch_point(int(p), int(k))));
-    selection.set(std::move(items));
+  // An action that replaces the selection with objects related to it.
+  auto select = [&](std::string id, std::string label, std::string help, ContextSet context,
+                    std::function<bool()> enabled,
+                    std::function<std::vector<SelectionItem>()> related) {
+    Action a = make_action(std::move(id), "Select", std::move(label), {}, std::move(help),
+                           [&selection, related] { selection.set(related()); });
+    a.context = context;
+    a.enabled = std::move(enabled);
+    return a;
   };
+
+  Action all =
+      select("select.all", "All Points", "select every network vertex and explicit patch point",
+             context_bit(ContextTarget::Empty), nullptr, [&doc] {
+               std::vector<SelectionItem> items;
+               const Scene& s = doc.scene();
+               if (s.network)
+                 for (std::size_t v = 0; v < s.network->vertices.size(); ++v)
+                   items.push_back(SelectionItem::of_point(PointRef::vertex(int(v))));
+               for (std::size_t p = 0; p < s.patches.size(); ++p)
+                 for (std::size_t k = 0; k < s.patches[p].patch->size(); ++k)
+                   items.push_back(SelectionItem::of_point(PointRef::patch_point(int(p), int(k))));
+               return items;
+             });
+  all.keys = {*parse_chord("Ctrl+A")};
   actions.add(std::move(all));
 
-  Action points;
-  points.id = "select.points_of";
-  points.menu = "Select";
-  points.label = "Points of Selection";
-  points.help = "select the editable points of the selected faces, edges and patches";
-  points.context = context_bit(ContextTarget::Face) | context_bit(ContextTarget::Edge) |
-                   context_bit(ContextTarget::Patch);
-  points.enabled = [has] { return has(Kind::Face)() || has(Kind::Edge)() || has(Kind::Patch)(); };
-  points.run = [&doc, &selection](const std::optional<KeyChord>&) {
-    std::vector<SelectionItem> items;
-    for (const PointRef& p : points_of(doc.scene(), selection))
-      items.push_back(SelectionItem::of_point(p));
-    selection.set(std::move(items));
-  };
-  actions.add(std::move(points));
+  actions.add(select(
+      "select.points_of", "Points of Selection",
+      "select the editable points of the selected faces, edges and patches",
+      context_bit(ContextTarget::Face) | context_bit(ContextTarget::Edge) |
+          context_bit(ContextTarget::Patch),
+      [has] { return has(Kind::Face)() || has(Kind::Edge)() || has(Kind::Patch)(); },
+      [&doc, &selection] {
+        std::vector<SelectionItem> items;
+        for (const PointRef& p : points_of(doc.scene(), selection))
+          items.push_back(SelectionItem::of_point(p));
+        return items;
+      }));
 
-  Action edges;
-  edges.id = "select.face_edges";
-  edges.menu = "Select";
-  edges.label = "Edges of Faces";
-  edges.help = "select the edges around the selected faces";
-  edges.context = context_bit(ContextTarget::Face);
-  edges.enabled = has(Kind::Face);
-  edges.run = [&doc, &selection](const std::optional<KeyChord>&) {
-    std::vector<SelectionItem> items;
-    const auto faces = existing(doc.scene(), selection, Kind::Face);
-    for (const std::vector<int>& sides : face_edges(*doc.scene().network, faces))
-      for (int e : sides)
-        if (e >= 0) items.push_back(SelectionItem::edge(e));
-    selection.set(std::move(items));
-  };
-  actions.add(std::move(edges));
+  actions.add(select("select.face_edges", "Edges of Faces",
+                     "select the edges around the selected faces", context_bit(ContextTarget::Face),
+                     has(Kind::Face), [&doc, &selection] {
+                       std::vector<SelectionItem> items;
+                       const auto faces = existing(doc.scene(), selection, Kind::Face);
+                       for (const std::vector<int>& sides : face_edges(*doc.scene().network, faces))
+                         for (int e : sides)
+                           if (e >= 0) items.push_back(SelectionItem::edge(e));
+                       return items;
+                     }));
 
-  Action faces;
-  faces.id = "select.edge_faces";
-  faces.menu = "Select";
-  faces.label = "Faces of Edges";
-  faces.help = "select the faces on either side of the selected edges";
-  faces.context = context_bit(ContextTarget::Edge);
-  faces.enabled = has(Kind::Edge);
-  faces.run = [&doc, &selection](const std::optional<KeyChord>&) {
-    std::vector<SelectionItem> items;
-    for (int e : existing(doc.scene(), selection, Kind::Edge)) {
-      const std::optional<EdgeProperties> p = edge_properties(doc.scene(), e);
-      for (int f : p->faces) items.push_back(SelectionItem::face(f));
-    }
-    selection.set(std::move(items));
-  };
-  actions.add(std::move(faces));
+  actions.add(select("select.edge_faces", "Faces of Edges",
+                     "select the faces on either side of the selected edges",
+                     context_bit(ContextTarget::Edge), has(Kind::Edge), [&doc, &selection] {
+                       std::vector<SelectionItem> items;
+                       for (int e : existing(doc.scene(), selection, Kind::Edge)) {
+                         const std::optional<EdgeProperties> p = edge_properties(doc.scene(), e);
+                         for (int f : p->faces) items.push_back(SelectionItem::face(f));
+                       }
+                       return items;
+                     }));
 
   add_scheme_action(actions, doc, selection, FaceScheme::Auto,
                     "fill the selected faces by their side count (Gregory for 3 and 4 sides)");
