@@ -156,14 +156,11 @@ int Editor::run() {
   return 0;
 }
 
-void Editor::draw_interface() {
+void Editor::draw_interface(const ColorRange& range) {
   draw_menu_bar(actions_);
   const EditorLayout l = layout();
-  const SidePanel panel{
-      prefs_,      views_,   session_.doc(),
-      selection_,  actions_, continuity_,
-      work_plane_, tools_,   views_.ready() ? common_range(views_, prefs_.display) : ColorRange{},
-      ui_scale_};
+  const SidePanel panel{prefs_,      views_,      session_.doc(), selection_, actions_,
+                        continuity_, work_plane_, tools_,         range,      ui_scale_};
   if (draw_side_panel(panel, l.menu_height, l.status_height)) rebuild_views(views_.compare());
 
   StatusFigures figures;
@@ -234,8 +231,9 @@ void Editor::frame() {
   f.hover = &mouse_.under;
   f.probe = &mouse_.probe;
   f.ui_scale = ui_scale_;
-  painter_.paint(f, views_.ready() ? common_range(views_, prefs_.display) : ColorRange{});
-  draw_interface();
+  const ColorRange range = views_.colour_range(prefs_.display, session_.doc().revision());
+  painter_.paint(f, range);
+  draw_interface(range);
   update_title();
   window_.end_frame();
   key_presses_.clear();

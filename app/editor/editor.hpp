@@ -118,8 +118,8 @@ class Editor {
   void report_menu_item(const std::string& label, float x0, float y0, float x1, float y1);
   bool debugging() const { return !options_.debug_items.empty(); }
 
-  // The panels and windows (side_panel.cpp, status_bar.cpp, ...) get the parts they show.
-  void draw_interface();
+  // The menus, panels and windows, given the parts they show; `range` is the colour range shown.
+  void draw_interface(const ColorRange& range);
 
   GlWindow& window_;
   EditorOptions options_;

@@ -92,7 +92,7 @@ void Editor::take_screenshot(const fs::path& path) {
     r.width = prefs_.screenshot_width;
     r.height = prefs_.screenshot_height;
     r.transparent = prefs_.screenshot_transparent;
-    const ColorRange range = common_range(views_, prefs_.display);
+    const ColorRange range = views_.colour_range(prefs_.display, session_.doc().revision());
     for (int i = 0; i < views_.panels(); ++i) {
       ShotPanel p{&views_.panel(i).gpu(), prefs_.display, range, ""};
       if (views_.compare()) p.label = i == 0 ? "Gregory" : "Generalized Bezier";

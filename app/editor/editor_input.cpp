@@ -128,7 +128,12 @@ void Editor::handle_mouse() {
   const auto rects = l.panels(views_.compare());
   ToolContext ctx = tool_context();
 
-  // A tool that took the press owns the mouse until the release, wherever the cursor goes.
+  // A tool that took the press owns the mouse until the release, wherever the cursor goes; no
+  // hover or probe meanwhile.
+  if (mouse_.tool_has_it || nav_.gesture() != ViewNavigator::Gesture::None) {
+    mouse_.under = {};
+    mouse_.probe.reset();
+  }
   if (mouse_.tool_has_it) {
     const ViewRect& rect = rects[std::clamp(mouse_.pressed_panel, 0, int(rects.size()) - 1)];
     const PointerEvent e = pointer_event(rect, &mouse_.pressed);

@@ -12,6 +12,7 @@ void SceneViews::rebuild(const Document& doc, const Preferences& prefs, bool com
   compare_views_[1].reset();
   error_.clear();
   field_.reset();
+  range_key_ = {};
   compare_ = false;
   try {
     const DisplaySettings& d = prefs.display;
@@ -52,6 +53,19 @@ bool SceneViews::follow(const Document& doc, const DisplaySettings& d) {
 const EvaluatedView& SceneViews::panel(int i) const {
   if (compare_ && i >= 0 && i < 2) return *compare_views_[i];
   return *main_;
+}
+
+ColorRange SceneViews::colour_range(const DisplaySettings& d, uint64_t revision) {
+  if (d.range) return *d.range;
+  if (!main_ || d.base != BaseMode::Curvature) return range_;
+  const RangeKey key{revision, settled(), compare_, d.curvature, d.range_percentile};
+  if (key == range_key_) return range_;
+  range_key_ = key;
+  std::vector<const SurfaceMesh*> meshes;
+  for (int i = 0; i < panels(); ++i)
+    for (const SurfaceMesh& m : panel(i).shown().draw().surfaces) meshes.push_back(&m);
+  range_ = automatic_range(meshes, d.curvature, d.range_percentile);
+  return range_;
 }
 
 const GpuScene* SceneViews::difference_scene(uint64_t revision) {

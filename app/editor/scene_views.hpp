@@ -33,6 +33,12 @@ class SceneViews {
   bool settled() const { return main_ && main_->settled(); }
   double last_eval_ms() const { return last_eval_ms_; }
 
+  // The curvature colour range common to all panels (equal colours mean equal curvature), for
+  // the document at `revision`: the fixed one, or the automatic one of the surfaces shown,
+  // recomputed only when they or the settings change (it visits every sample). Only the
+  // curvature modes use it; others get a placeholder without the cost.
+  ColorRange colour_range(const DisplaySettings& display, uint64_t revision);
+
   // The comparison's difference colouring (GB coloured by its distance to Gregory).
   bool difference = false;
   bool showing_difference() const { return compare_ && difference; }
@@ -49,6 +55,14 @@ class SceneViews {
   std::string error_;
   double last_eval_ms_ = 0;
   DifferenceField field_;
+  struct RangeKey {
+    uint64_t revision = UINT64_MAX;
+    bool settled = false, compare = false;
+    CurvatureKind kind = CurvatureKind::Mean;
+    double percentile = 0;
+    bool operator==(const RangeKey&) const = default;
+  } range_key_;
+  ColorRange range_{-1, 1};
   std::unique_ptr<GpuScene> difference_gpu_;
 };
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "app/editor/logic/selection_properties.hpp"
 #include "app/editor/theme.hpp"
@@ -58,20 +59,18 @@ uint64_t item_key(const std::optional<SelectionItem>& item) {
 
 }  // namespace
 
-ColorRange common_range(const SceneViews& views, const DisplaySettings& display) {
-  if (display.range) return *display.range;
-  std::vector<const SurfaceMesh*> meshes;
-  for (int i = 0; i < views.panels(); ++i)
-    for (const SurfaceMesh& m : views.panel(i).shown().draw().surfaces) meshes.push_back(&m);
-  return automatic_range(meshes, display.curvature, display.range_percentile);
-}
-
 void ViewportPainter::update_guides(const ViewportFrame& f, int panel) {
   PanelGuides& g = guides_[panel];
   const LiveSurfaces& live = f.views->panel(panel).shown();
   const Scene& scene = f.doc->scene();
   const auto& curves = live.draw().network_curves;
-  const std::vector<SelectionItem> items = surface_items(live.surfaces());
+  // Which face or patch each surface draws (built only when a highlight changes).
+  std::vector<SelectionItem> items;
+  auto surface_item = [&](std::size_t s) -> const SelectionItem& {
+    if (items.empty()) items = surface_items(live.surfaces());
+    return items[s];
+  };
+  const std::size_t surfaces = live.surfaces().surfaces.size();
 
   const uint64_t selected_key = guide_key(live, f.selection->serial());
   if (selected_key != g.selected_key) {
@@ -84,10 +83,17 @@ void ViewportPainter::update_guides(const ViewportFrame& f, int panel) {
         edges.insert(edges.end(), sides.begin(), sides.end());
     for (int e : edges)
       if (e >= 0 && e < int(curves.size())) append_segments(curves[e], lines);
-    g.selected.set(lines, {});
+    if (!lines.empty() || !g.selected.empty()) g.selected.set(lines, {});
     g.selected_surfaces.clear();
-    for (std::size_t s = 0; s < items.size(); ++s)
-      if (f.selection->contains(items[s])) g.selected_surfaces.push_back(int(s));
+    const std::set<int> faces_set(faces.begin(), faces.end());
+    const std::vector<int> patches = f.selection->of_kind(SelectionItem::Kind::Patch);
+    const std::set<int> patch_set(patches.begin(), patches.end());
+    if (!faces_set.empty() || !patch_set.empty())
+      for (std::size_t s = 0; s < surfaces; ++s) {
+        const SelectionItem& i = surface_item(s);
+        if ((i.kind == SelectionItem::Kind::Face ? faces_set : patch_set).count(i.index))
+          g.selected_surfaces.push_back(int(s));
+      }
   }
 
   const std::optional<SelectionItem> hovered =
@@ -101,9 +107,9 @@ void ViewportPainter::update_guides(const ViewportFrame& f, int panel) {
         hovered->index < int(curves.size()))
       append_segments(curves[hovered->index], lines);
     if (hovered && hovered->kind != SelectionItem::Kind::Point)
-      for (std::size_t s = 0; s < items.size(); ++s)
-        if (items[s] == *hovered) g.hovered_surface = int(s);
-    g.hovered.set(lines, {});
+      for (std::size_t s = 0; s < surfaces; ++s)
+        if (surface_item(s) == *hovered) g.hovered_surface = int(s);
+    if (!lines.empty() || !g.hovered.empty()) g.hovered.set(lines, {});
   }
 
   if (f.work_plane->shown) {

@@ -62,7 +62,4 @@ class ViewportPainter {
   std::array<PanelGuides, 2> guides_;
 };
 
-// The curvature colour range common to all panels (so equal colours mean equal curvature).
-ColorRange common_range(const SceneViews& views, const DisplaySettings& display);
-
 }  // namespace pl
