@@ -1,5 +1,5 @@
 // Ray casting against one tessellated surface: a bounding-volume hierarchy over its triangles
-// (median splits, boxes stored as floats rounded outwards, so it stays small: about 12 bytes per
+// (median splits, boxes stored as floats rounded outwards, so it stays small: about 16 bytes per
 // triangle) and the exact ray-triangle test (Moller-Trumbore in doubles on the mesh's own
 // positions). A query returns the same triangle and distance as testing every triangle, at a
 // small fraction of the cost. GUI-free and unit-tested.
