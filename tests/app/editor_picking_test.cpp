@@ -206,6 +206,47 @@ TEST(EditorPicking, CurvesBehindASurfaceAreNotPicked) {
   EXPECT_GT(back, 3);
 }
 
+TEST(EditorPicking, PointsInFrontOfTheSurfaceWinOverPointsBehindIt) {
+  // The closed cube-sphere seen from the front: a vertex on the back projects near a front one.
+  Scene s;
+  s.network = cube_sphere_network(2, FaceScheme::Auto);
+  const LiveSurfaces live(s, 8, std::nullopt, "sphere");
+  std::vector<SelectionItem> items;
+  const PickScene scene = pick_scene(live, items);
+  const Camera c = framing(live.draw(), ViewPreset::Front);
+  ScenePicker picker;
+  const ScenePoints& pts = live.points();
+  int pairs = 0;
+  for (std::size_t a = 0; a < s.network->vertices.size(); ++a) {
+    const Vec3 front = s.network->vertices[a];
+    if (front.y > -0.3) continue;
+    const Vec2 pa = *project_to_window(c, kRect, front);
+    for (std::size_t b = 0; b < s.network->vertices.size(); ++b) {
+      const Vec3 back = s.network->vertices[b];
+      if (back.y < 0.3) continue;
+      const Vec2 pb = *project_to_window(c, kRect, back);
+      if (glm::length(pa - pb) > 8) continue;
+      // Closer on screen to the back vertex, still the front one.
+      const Vec2 cursor = pb + 0.2 * (pa - pb);
+      const PickResult r = picker.pick(scene, c, kRect, cursor, {true, false});
+      ASSERT_TRUE(r.item);
+      EXPECT_EQ(*r.item, SelectionItem::of_point(PointRef::vertex(int(a))));
+      ++pairs;
+    }
+  }
+  EXPECT_GT(pairs, 0);
+  // Where nothing is in front, a point behind the surface is still picked (the net is drawn
+  // over everything, so it is where the user sees it).
+  int hidden_picked = 0;
+  for (std::size_t i = 0; i < pts.positions.size(); ++i) {
+    if (!pts.refs[i] || pts.positions[i].y < 0.5) continue;
+    const Vec2 px = *project_to_window(c, kRect, pts.positions[i]);
+    const PickResult r = picker.pick(scene, c, kRect, px, {true, false});
+    if (r.item && *r.item == SelectionItem::of_point(*pts.refs[i])) ++hidden_picked;
+  }
+  EXPECT_GT(hidden_picked, 0);
+}
+
 TEST(EditorPicking, CastAgreesWithEveryTriangleOnALargeNetwork) {
   Scene s;
   s.network = cube_sphere_network(16, FaceScheme::Auto);  // 1,536 faces

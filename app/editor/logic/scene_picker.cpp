@@ -9,8 +9,8 @@ namespace pl {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-// A curve lies on the surfaces it bounds, but they are drawn as chords of the exact surface:
-// a curve point up to this many pixels (in world size at its depth) behind the surface hit
+// A curve (or a vertex) lies on the surfaces it bounds, but they are drawn as chords of the exact
+// surface: a point up to this many pixels (in world size at its depth) behind the surface hit
 // still counts as visible. The renderer pulls curves forward for the same reason.
 constexpr double kCurveDepthSlackPx = 4.0;
 
@@ -100,11 +100,14 @@ PickResult ScenePicker::pick(const PickScene& scene, const Camera& camera, const
     return glm::dot(w, w) - t * t <= reach * reach || t <= 0;
   };
 
+  const double surface_t = r.surface ? r.surface->hit.t : kInfinity;
   if (options.points && scene.points) {
     const ScenePoints& pts = *scene.points;
-    // Editable points first: a derived point next to a vertex must not block grabbing it. One
-    // pass keeps the best of each kind.
-    NearestPoint editable, derived;
+    // Editable points first: a derived point next to a vertex must not block grabbing it; and
+    // among editable points those in front of the surface first (one drawn on top of the
+    // surface at the cursor beats one behind it that happens to be nearer on screen). One pass
+    // keeps the best of each kind.
+    NearestPoint in_front, behind, derived;
     for (std::size_t i = 0; i < pts.positions.size(); ++i) {
       const Vec3& p = pts.positions[i];
       if (!camera.orthographic && !near_ray(p, options.point_radius_px)) continue;
@@ -112,10 +115,18 @@ PickResult ScenePicker::pick(const PickScene& scene, const Camera& camera, const
       if (!s) continue;
       const double d = glm::length(*s - pixel);
       if (d > options.point_radius_px) continue;
-      (pts.refs[i] ? editable : derived).offer(static_cast<int>(i), d, glm::dot(p - eye, forward));
+      const double z = glm::dot(p - eye, forward);
+      if (!pts.refs[i]) {
+        derived.offer(static_cast<int>(i), d, z);
+      } else {
+        const double t = glm::dot(p - ray.origin, ray.direction);
+        const bool hidden = t > surface_t + kCurveDepthSlackPx * world_per_px(z);
+        (hidden ? behind : in_front).offer(static_cast<int>(i), d, z);
+      }
     }
-    if (editable.index >= 0) {
-      r.point = editable.index;
+    const int editable = in_front.index >= 0 ? in_front.index : behind.index;
+    if (editable >= 0) {
+      r.point = editable;
       r.item = SelectionItem::of_point(*pts.refs[r.point]);
     } else if (derived.index >= 0) {
       r.point = derived.index;
@@ -124,7 +135,6 @@ PickResult ScenePicker::pick(const PickScene& scene, const Camera& camera, const
   }
 
   if (options.curves) {
-    const double surface_t = r.surface ? r.surface->hit.t : kInfinity;
     double best = options.curve_radius_px;
     for (std::size_t e = 0; e < scene.curves.size(); ++e) {
       const Polyline& line = scene.curves[e];

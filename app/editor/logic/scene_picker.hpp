@@ -1,5 +1,6 @@
 // What lies under the cursor in a view: a control point (drawn over everything, so picked
-// within a pixel radius regardless of depth; editable points before derived ones), else a
+// within a pixel radius whatever its depth; editable points before derived ones, and those in
+// front of the surface under the cursor before those behind it), else a
 // network curve (within a pixel radius and not hidden behind a surface), else the nearest
 // surface along the ray. A click selects the first of these that is selectable: the point, the
 // curve's edge, or the surface's face (or explicit patch).
