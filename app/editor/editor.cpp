@@ -192,7 +192,7 @@ void Editor::draw_interface(const ColorRange& range) {
     MenuItemProbe probe;
     // Reported once, on the third frame of the menu: ImGui lays a popup out while it is hidden
     // on its first frame and may move it on the second.
-    if (debugging() && ++context_frames_ == 3)
+    if (debugging() && ++debug_.menu_frames == 3)
       probe = [this](const std::string& label, float x0, float y0, float x1, float y1) {
         report_menu_item(label, x0, y0, x1, y1);
       };

@@ -132,7 +132,6 @@ class Editor {
   SceneViews views_;
   ViewNavigator nav_;
   Selection selection_;
-  uint64_t reported_selection_ = 0;
   ScenePicker pickers_[2];  // one per panel: each shows its own filling
   ToolBox tools_;
   WorkPlane work_plane_;
@@ -143,14 +142,19 @@ class Editor {
   ViewportPainter painter_;
   Mouse mouse_;
   std::optional<ContextTarget> context_;           // the right-click menu is open on this
-  int context_frames_ = 0;                         // frames it has been open
   std::optional<Clock::time_point> release_time_;  // waiting for the fine surfaces
+  // What editor_debug.cpp has printed: the objects' positions, the last selection, and the
+  // frames the context menu has been open (its items are printed once laid out).
+  struct DebugState {
+    bool positions = false;
+    uint64_t selection = 0;
+    int menu_frames = 0;
+  } debug_;
 
   // Key presses since the last frame (key, mods): ImGui 1.86 keeps only the key state, so a press
   // and release between two frames (xdotool, a fast typist) would be lost. Dropped files too.
   std::vector<std::pair<int, int>> key_presses_;
   std::vector<std::string> dropped_;
-  bool debug_reported_ = false;
   bool quit_ = false;
   bool show_help_ = false;
   int frames_ = 0;

@@ -18,7 +18,7 @@
 namespace pl {
 
 void Editor::report_debug_items() {
-  if (!debugging() || debug_reported_ || !views_.ready()) return;
+  if (!debugging() || debug_.positions || !views_.ready()) return;
   const auto rects = layout().panels(views_.compare());
   const Camera& camera = nav_.camera();
   int wx = 0, wy = 0;
@@ -52,12 +52,12 @@ void Editor::report_debug_items() {
       std::printf("%s %s hidden\n", kind, describe(item).c_str());
   }
   std::fflush(stdout);
-  debug_reported_ = true;
+  debug_.positions = true;
 }
 
 void Editor::report_selection_change() {
-  if (selection_.serial() == reported_selection_) return;
-  reported_selection_ = selection_.serial();
+  if (selection_.serial() == debug_.selection) return;
+  debug_.selection = selection_.serial();
   std::cout << "selection: " << (selection_.empty() ? "none" : describe(selection_, 64))
             << std::endl;
 }

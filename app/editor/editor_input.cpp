@@ -166,7 +166,7 @@ void Editor::handle_mouse() {
                      : item->kind == SelectionItem::Kind::Patch ? ContextTarget::Patch
                                                                 : ContextTarget::Point;
           open_context_menu();
-          context_frames_ = 0;
+          debug_.menu_frames = 0;
         }
       }
       mouse_.context_press = false;
