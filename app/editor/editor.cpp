@@ -1,6 +1,7 @@
 #include "app/editor/editor.hpp"
 
 #include <cstdio>
+#include <stdexcept>
 #include <utility>
 
 #define GLFW_INCLUDE_NONE
@@ -46,6 +47,10 @@ Editor::Editor(GlWindow& window, EditorOptions options, DocumentSession session)
   window_.apply_ui_scale(ui_scale_);
   tools_.add(std::make_unique<SelectTool>());
   register_actions();
+  // A key given to two commands is a programmer's error: refuse to start (the end-to-end tests
+  // start the editor, so they catch it).
+  if (const auto clashes = actions_.conflicts(); !clashes.empty())
+    throw std::logic_error("a key is bound to two commands: " + clashes.front());
   glfwSetWindowUserPointer(window_.handle(), this);
   glfwSetDropCallback(window_.handle(), [](GLFWwindow* w, int count, const char** paths) {
     auto* self = static_cast<Editor*>(glfwGetWindowUserPointer(w));

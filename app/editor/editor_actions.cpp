@@ -191,13 +191,15 @@ void Editor::register_actions() {
 
   // Tools: one entry per tool of the tool box, checked while active.
   for (std::size_t i = 0; i < tools_.size(); ++i) {
-    std::string id = "tool." + tools_.tool(i).name();
+    const Tool& tool = tools_.tool(i);
+    std::string id = "tool." + tool.name();
     std::transform(id.begin(), id.end(), id.begin(), ::tolower);
-    Action a =
-        make_action(id, "Tools", tools_.tool(i).name(), {}, tools_.tool(i).hint(), [this, i] {
-          ToolContext ctx = tool_context();
-          tools_.activate(i, ctx);
-        });
+    std::vector<std::string> keys;
+    if (!tool.shortcut().empty()) keys.push_back(tool.shortcut());
+    Action a = make_action(id, "Tools", tool.name(), keys, tool.hint(), [this, i] {
+      ToolContext ctx = tool_context();
+      tools_.activate(i, ctx);
+    });
     a.checked = [this, i] { return tools_.active_index() == i; };
     r.add(std::move(a));
   }

@@ -136,7 +136,7 @@ int run_editor(std::span<const std::string> args, std::ostream& out, std::ostrea
   } catch (const WindowError& e) {
     err << "patchlab: " << e.what() << "\n";
     return 1;
-  } catch (const std::runtime_error& e) {
+  } catch (const std::exception& e) {
     err << "patchlab: " << e.what() << "\n";
     return 1;
   }

@@ -142,6 +142,8 @@ TEST(EditorPicking, PointsFirstThenCurvesThenSurfaces) {
     r = picker.pick(scene, c, kRect, mid, {false, true});
     ASSERT_TRUE(r.item) << k;
     EXPECT_EQ(*r.item, SelectionItem::edge(int(k)));
+    // The parameter there: the middle sample is at t = 1/2 (to the pixel's rounding).
+    EXPECT_NEAR(r.edge_t, 0.5, 1e-6);
     // A few pixels off the curve (across it on screen) is still the edge; far off is not.
     const Vec2 along = *project_to_window(c, kRect, line[line.size() / 2 + 1]) - mid;
     const Vec2 across = glm::normalize(Vec2(-along.y, along.x));

@@ -159,6 +159,7 @@ PickResult ScenePicker::pick(const PickScene& scene, const Camera& camera, const
             if (depth <= surface_t + slack) {
               best = d;
               r.edge = static_cast<int>(e);
+              r.edge_t = (double(k - 1) + s) / double(line.size() - 1);
             }
           }
         }

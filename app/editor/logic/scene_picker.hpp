@@ -54,6 +54,9 @@ struct PickResult {
   int point = -1;                     // ScenePoints index under the cursor, -1 if none
   bool derived_point = false;         // that point is derived (shown, not editable)
   int edge = -1;                      // network edge under the cursor, -1 if none
+  // Where on that edge: its curve parameter (the polylines sample the curve at even steps of t,
+  // so this is exact at the samples and linear between them).
+  double edge_t = 0;
   std::optional<SurfaceHit> surface;  // nearest surface along the ray
 };
 

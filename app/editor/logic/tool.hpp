@@ -47,6 +47,8 @@ class Tool {
   virtual std::string name() const = 0;
   // What the tool does, for the status bar while it is active.
   virtual std::string hint() const = 0;
+  // The key that activates it ("V"; empty: none), bound through the action table.
+  virtual std::string shortcut() const { return {}; }
 
   // A left press in a view. Returns true when the tool takes the mouse: it then gets drag() at
   // every cursor position and release() at the end. Returns false to let the press orbit the
