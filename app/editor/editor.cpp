@@ -209,9 +209,12 @@ void Editor::draw_interface(const ColorRange& range) {
 void Editor::frame() {
   const auto start = Clock::now();
   window_.begin_frame();
-  handle_drops();
-  handle_keys();
+  // A document replaced last frame (a menu, a dialog) first resets the parts that held the old
+  // one; so does one replaced by a dropped file or a key now (handle_keys sees to that).
   if (session_.serial() != session_serial_) after_document_replaced();
+  handle_drops();
+  if (session_.serial() != session_serial_) after_document_replaced();
+  handle_keys();
   handle_mouse();
   follow_document();
   if (views_.ready() && !nav_.framed()) {

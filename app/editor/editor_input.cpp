@@ -105,6 +105,12 @@ void Editor::handle_keys() {
     // A slider or field being edited keeps the plain keys; Ctrl chords still work.
     if (!chord.ctrl && ImGui::IsAnyItemActive()) continue;
     actions_.trigger(chord);
+    // The next key may act on the selection: drop what an undo removed, or all of it for a new
+    // document.
+    if (session_.serial() != session_serial_)
+      after_document_replaced();
+    else
+      selection_.prune(session_.doc().scene());
   }
 }
 
