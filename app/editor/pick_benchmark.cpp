@@ -52,7 +52,7 @@ struct Figures {
   std::size_t triangles = 0, hits = 0, hierarchies = 0, memory = 0;
 };
 
-// Picks at a grid of cursor positions over a 1280x720 view framing the scene.
+// Picks at a grid of cursor positions over the scene in a 1280x720 view framing it.
 Figures measure(const PickData& d, bool brute_force) {
   Figures f;
   for (const SurfaceMesh& m : d.meshes) f.triangles += m.triangles.size();
@@ -66,11 +66,23 @@ Figures measure(const PickData& d, bool brute_force) {
   auto t0 = Clock::now();
   picker.pick(scene, camera, rect, Vec2(640, 360));
   f.first_ms = ms_since(t0);
+  // Cursor positions over the scene's screen box (most of them on a surface, as a designer's).
+  Vec2 lo(rect.width, rect.height), hi(0, 0);
+  for (int c = 0; c < 8; ++c) {
+    const Vec3 corner((c & 1 ? box.hi : box.lo).x, (c & 2 ? box.hi : box.lo).y,
+                      (c & 4 ? box.hi : box.lo).z);
+    if (const auto p = project_to_window(camera, rect, corner)) {
+      lo = glm::min(lo, *p);
+      hi = glm::max(hi, *p);
+    }
+  }
+  lo = glm::max(lo, Vec2(0)), hi = glm::min(hi, Vec2(rect.width, rect.height));
   constexpr int kNx = 24, kNy = 14;
   std::vector<Vec2> pixels;
   for (int j = 0; j < kNy; ++j)
     for (int i = 0; i < kNx; ++i)
-      pixels.emplace_back(rect.width * (i + 0.5) / kNx, rect.height * (j + 0.5) / kNy);
+      pixels.emplace_back(lo.x + (hi.x - lo.x) * (i + 0.5) / kNx,
+                          lo.y + (hi.y - lo.y) * (j + 0.5) / kNy);
   // Once to build what the hover would have built, then measured.
   for (const Vec2& p : pixels) picker.pick(scene, camera, rect, p);
   t0 = Clock::now();

@@ -4,7 +4,7 @@
 // Headless: it needs no window. Prints
 //   figure pick_first_ms          first pick after a load (boxes of every surface, hierarchies
 //                                 of the surfaces the ray enters)
-//   figure pick_ms_24_faces       mean full pick (points, curves, surfaces) over the view
+//   figure pick_ms_24_faces       mean full pick (points, curves, surfaces) over the scene
 //   figure pick_ms_1536_faces     the same on the large network
 //   figure pick_every_triangle_ms one ray against every triangle (the brute-force baseline)
 //   figure pick_hierarchy_mb      memory of the hierarchies built by those picks
