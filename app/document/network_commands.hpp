@@ -123,7 +123,7 @@ class SetFaceSchemeCommand final : public Command {
   SetFaceSchemeCommand(int face, FaceScheme scheme) : face_(face), scheme_(scheme) {}
   void apply(Scene& scene) override;
   std::string label() const override {
-    return "face " + std::to_string(face_) + " scheme " + scheme_name(scheme_);
+    return "face " + std::to_string(face_) + " scheme " + scheme_keyword(scheme_);
   }
 
  private:

@@ -402,7 +402,7 @@ Vec3 stored_normal(const Vec3& normal) {
   return n;
 }
 
-std::string scheme_name(FaceScheme s) {
+std::string scheme_keyword(FaceScheme s) {
   switch (s) {
     case FaceScheme::Auto:
       return "auto";

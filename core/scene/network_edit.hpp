@@ -99,6 +99,6 @@ void set_vertex_normal(Network& network, int v, std::optional<Vec3> normal);
 Vec3 stored_normal(const Vec3& normal);
 
 // The name of a scheme as the file and the interface spell it ("auto", "gregory", "gb").
-std::string scheme_name(FaceScheme scheme);
+std::string scheme_keyword(FaceScheme scheme);
 
 }  // namespace pl
