@@ -35,6 +35,7 @@ std::vector<int> density_levels(const DensityBudget& b) {
 }
 
 std::vector<int> choose_densities(std::span<const SurfaceSize> sizes, const DensityBudget& b) {
+  if (sizes.empty()) return {};
   const std::vector<int> levels = density_levels(b);  // finest first
   const int coarsest = int(levels.size()) - 1;
   std::vector<int> level(sizes.size());
