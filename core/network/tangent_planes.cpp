@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "core/io/data_error.hpp"
@@ -15,26 +16,38 @@ std::string edge_handle_path(const Network& net, int e, int v) {
   return "network.edges[" + std::to_string(e) + "].handles[" + std::to_string(k) + "]";
 }
 
+// The edge's control points (no allocation: planes are computed for every vertex of a network).
+std::array<Vec3, 4> control_points(const Network& net, int e) {
+  const NetworkEdge& ed = net.edges[e];
+  return {net.vertices[ed.v[0]], ed.handles[0], ed.handles[1], net.vertices[ed.v[1]]};
+}
+
 // Size of the edge's control polygon: the scale a "zero" tangent is measured against.
 double edge_extent(const Network& net, int e) {
-  const BezierCurve c = net.edge_curve(e);
+  const std::array<Vec3, 4> p = control_points(net, e);
   double d = 0;
-  for (const Vec3& p : c.control_points()) d = std::max(d, glm::length(p - c.control_points()[0]));
+  for (const Vec3& q : p) d = std::max(d, glm::length(q - p[0]));
   return d;
 }
 
 // The right-hand (Newell) normal of a face's boundary control polygon: which way the face faces,
 // whatever its corners do (a reflex corner's own normal points the other way).
 Vec3 face_polygon_normal(const Network& net, const NetworkTopology& topo, int f) {
-  std::vector<Vec3> poly;
+  Vec3 n(0), first(0), previous(0);
+  bool started = false;
   for (const FaceSide& side : topo.face_sides[f]) {
-    const BezierCurve curve = net.edge_curve(side.edge);
-    const auto& pts = curve.control_points();
-    for (int j = 0; j < 3; ++j) poly.push_back(pts[side.reversed ? 3 - j : j]);
+    const std::array<Vec3, 4> pts = control_points(net, side.edge);
+    for (int j = 0; j < 3; ++j) {
+      const Vec3& p = pts[side.reversed ? 3 - j : j];
+      if (started)
+        n += glm::cross(previous, p);
+      else
+        first = p;
+      started = true;
+      previous = p;
+    }
   }
-  Vec3 n(0);
-  for (std::size_t i = 0; i < poly.size(); ++i)
-    n += glm::cross(poly[i], poly[(i + 1) % poly.size()]);
+  n += glm::cross(previous, first);
   const double len = glm::length(n);
   return len > 0 ? n / len : n;
 }
