@@ -85,7 +85,7 @@ CombPixels measure_combs(const DrawScene& scene, Segments segments) {
   r.height = 300;
   r.settings = parse_display_mode("shaded+network");
   r.camera = preset_camera(ViewPreset::Top, scene.bounds(), 400.0 / 300.0);
-  r.panels.push_back({&gpu, ""});
+  r.panels.emplace_back().scene = &gpu;
   const Image plain = render_frame(renderer, r);
   r.settings = parse_display_mode("shaded+network+combs");
   const Image combs = render_frame(renderer, r);

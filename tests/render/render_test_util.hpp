@@ -8,6 +8,8 @@
 #include <memory>
 #include <string>
 
+#include "app/cli/draw_scene_builder.hpp"
+#include "app/cli/load_input.hpp"
 #include "core/domain/tessellation_cache.hpp"
 #include "core/eval/patch_evaluator.hpp"
 #include "core/mesh/surface_mesh.hpp"
@@ -68,6 +70,19 @@ inline std::vector<Vec3> saddle_points() {
   // Bernstein coefficients of x^2 on [-1,1] are not the samples; the lifted inner points make it
   // a genuine saddle-like bicubic either way.
   return p;
+}
+
+// A scene file (.json or .gbp) as the `render` command draws it (no combs), or with one filling
+// scheme for its network faces.
+inline DrawScene file_draw_scene(const std::string& path, std::optional<FaceScheme> scheme = {},
+                                 int density = 24) {
+  const Scene scene = load_input(path);
+  static TessellationCache cache;
+  return build_draw_scene(scene, evaluate_scene(scene, density, scheme, cache, path), 0);
+}
+
+inline std::string asset(const std::string& name) {
+  return std::string(PATCHLAB_SOURCE_DIR) + "/assets/" + name;
 }
 
 }  // namespace pl::test
