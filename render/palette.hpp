@@ -36,7 +36,7 @@ inline constexpr Rgb kCombEnvelope{0.00f, 0.45f, 0.40f};
 // What the editor points at (a picked edge, a warning): saturated yellow, a hue no colour map
 // (blue - white - red), no point kind and no other overlay uses, so it stays visible on every
 // display mode.
-inline constexpr Rgb kHighlight{1.00f, 0.86f, 0.00f};
+inline constexpr Rgb kHighlight{1.00f, 0.93f, 0.00f};
 
 // Ink for burned-in text and the frames of keys and legends; their panels are opaque.
 inline constexpr Rgb kInk{0.13f, 0.14f, 0.17f};
