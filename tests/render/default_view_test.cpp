@@ -77,19 +77,13 @@ TEST(DefaultView, APatchFacingAwayIsSeenFromTheFrontAndFillsTheFrame) {
   DrawScene d;
   d.surfaces.push_back(evaluated(std::shared_ptr<Patch>(flipped_orientation(*wave()).patch)));
   SceneRenderer renderer;
-  GpuScene gpu(d);
-  FrameRequest r;
-  r.width = 800;
-  r.height = 600;
-  r.settings = parse_display_mode("shaded");
-  r.settings.transparent = true;
-  r.panels.emplace_back().scene = &gpu;
-  const DrawScene* scenes[] = {&d};
-  r.camera = default_camera(scenes, panel_aspect(r));
-  const Coverage seen = coverage(render_frame(renderer, r));
+  const GpuScene gpu(d);
+  DisplaySettings shaded = parse_display_mode("shaded");
+  shaded.transparent = true;  // the surface's pixels are the opaque ones
+  const Coverage seen = coverage(render_frame(renderer, test::one_panel(gpu, d, shaded, 800, 600)));
   // The iso view of the same patch shows its back.
-  r.camera = preset_camera(ViewPreset::Iso, d.bounds(), panel_aspect(r));
-  const Coverage iso = coverage(render_frame(renderer, r));
+  const Coverage iso =
+      coverage(render_frame(renderer, test::one_panel(gpu, d, shaded, 800, 600, ViewPreset::Iso)));
   std::printf("flipped wave: default view covers %.2f (back %.3f), iso view %.2f (back %.3f)\n",
               seen.covered, seen.back, iso.covered, iso.back);
   EXPECT_GT(iso.back, 0.95);

@@ -42,10 +42,7 @@ Image render(const DrawScene& scene, const std::string& mode) {
 
 DrawScene floor_only() {
   DrawScene d;
-  std::vector<Vec3> square;
-  for (int i = 0; i < 2; ++i)
-    for (int j = 0; j < 2; ++j) square.emplace_back(-1.5 + 3 * i, -1.5 + 3 * j, 0);
-  d.surfaces.push_back(test::bezier_mesh(1, 1, square, 2, "floor"));
+  d.surfaces.push_back(test::floor_square(1.5));
   return d;
 }
 

@@ -46,14 +46,9 @@ TEST(Palette, HighlightedCurvesAreDrawnInTheHighlightColour) {
   for (int i = 0; i <= 32; ++i) middle.push_back(patch.evaluate({i / 32.0, 0.5}).p);
   d.highlights.push_back(middle);
   SceneRenderer renderer;
-  GpuScene gpu(d);
-  FrameRequest r;
-  r.width = 320;
-  r.height = 240;
-  r.settings = parse_display_mode("gaussian");
-  r.panels.emplace_back().scene = &gpu;
-  r.camera = preset_camera(ViewPreset::Top, d.bounds(), panel_aspect(r));
-  const Image image = render_frame(renderer, r);
+  const GpuScene gpu(d);
+  const Image image = render_frame(
+      renderer, test::one_panel(gpu, d, parse_display_mode("gaussian"), 320, 240, ViewPreset::Top));
   int highlighted = 0;
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
@@ -66,19 +61,13 @@ TEST(Palette, HighlightedCurvesAreDrawnInTheHighlightColour) {
   EXPECT_GT(highlighted, 2 * 150);
 }
 
-Image render_saddle(const DisplaySettings& settings, ViewPreset view = ViewPreset::Iso) {
+Image render_saddle(DisplaySettings settings, ViewPreset view = ViewPreset::Iso) {
   DrawScene d;
   d.surfaces.push_back(test::bezier_mesh(3, 3, test::saddle_points(), 24, "saddle"));
   SceneRenderer renderer;
-  GpuScene gpu(d);
-  FrameRequest r;
-  r.width = 400;
-  r.height = 300;
-  r.settings = settings;
-  r.settings.transparent = true;  // the surface's pixels are the opaque ones
-  r.panels.emplace_back().scene = &gpu;
-  r.camera = preset_camera(view, d.bounds(), 400.0 / 300.0);
-  return render_frame(renderer, r);
+  const GpuScene gpu(d);
+  settings.transparent = true;  // the surface's pixels are the opaque ones
+  return render_frame(renderer, test::one_panel(gpu, d, settings, 400, 300, view));
 }
 
 // Mean absolute difference (0..255, over the colour channels) on the pixels covered in both.

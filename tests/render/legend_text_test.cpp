@@ -92,16 +92,8 @@ TEST(LegendAt4096, TextIsCrispAndMatchesTheGolden) {
   PATCHLAB_REQUIRE_GL();
   const DrawScene d = test::file_draw_scene(test::asset("default.json"));
   SceneRenderer renderer;
-  GpuScene gpu(d);
-  FrameRequest r;
-  r.width = r.height = 4096;
-  r.settings = parse_display_mode("mean");
-  r.panels.emplace_back().scene = &gpu;
-  std::vector<const SurfaceMesh*> meshes;
-  for (const SurfaceMesh& m : d.surfaces) meshes.push_back(&m);
-  r.range = automatic_range(meshes, r.settings.curvature);
-  const DrawScene* scenes[] = {&d};
-  r.camera = default_camera(scenes, panel_aspect(r));
+  const GpuScene gpu(d);
+  const FrameRequest r = test::one_panel(gpu, d, parse_display_mode("mean"), 4096, 4096);
   const Image image = render_frame(renderer, r);
   const FrameLayout layout = frame_layout(r);
   ASSERT_TRUE(layout.legend);

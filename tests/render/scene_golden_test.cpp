@@ -2,6 +2,8 @@
 // the control nets of a GB and a B-spline patch, the Hermite patch's derivative arrows, the
 // comparison coloured by the distance between the two fillings with its legend, and the legend
 // of a 4096 x 4096 picture (golden.hpp compares them; look at them after regenerating).
+#include <algorithm>
+
 #include "core/network/network_filling.hpp"
 #include "golden.hpp"
 #include "render/default_view.hpp"
@@ -15,50 +17,43 @@
 namespace pl {
 namespace {
 
-// One scene in the default view, as `patchlab render FILE` draws it.
-Image render_default(const DrawScene& scene, const std::string& mode, int width, int height) {
+// A scene's control net in the default view at 640 x 480, as `patchlab render FILE --mode
+// shaded+control-net` draws it.
+struct NetCase {
+  const char* golden;
+  const char* asset;
+  std::optional<FaceScheme> scheme;
+};
+
+class SceneGolden : public ::testing::TestWithParam<NetCase> {};
+
+TEST_P(SceneGolden, ControlNetInTheDefaultView) {
+  PATCHLAB_REQUIRE_GL();
+  const NetCase& c = GetParam();
+  const DrawScene d = test::file_draw_scene(test::asset(c.asset), c.scheme);
   SceneRenderer renderer;
-  GpuScene gpu(scene);
-  FrameRequest r;
-  r.width = width;
-  r.height = height;
-  r.settings = parse_display_mode(mode);
-  r.panels.emplace_back().scene = &gpu;
-  std::vector<const SurfaceMesh*> meshes;
-  for (const SurfaceMesh& m : scene.surfaces) meshes.push_back(&m);
-  r.range = automatic_range(meshes, r.settings.curvature);
-  const DrawScene* scenes[] = {&scene};
-  r.camera = default_camera(scenes, panel_aspect(r));
-  return render_frame(renderer, r);
+  const GpuScene gpu(d);
+  const DisplaySettings net = parse_display_mode("shaded+control-net");
+  test::compare_with_golden(c.golden,
+                            render_frame(renderer, test::one_panel(gpu, d, net, 640, 480)));
 }
 
-TEST(SceneGolden, PointKindsOfTheDefaultScene) {
-  PATCHLAB_REQUIRE_GL();
-  const DrawScene d = test::file_draw_scene(test::asset("default.json"));
-  test::compare_with_golden("default-point-kinds",
-                            render_default(d, "shaded+control-net", 640, 480));
-}
-
-// GB fillings of network faces: their ribbon rows and spokes are derived from the network.
-TEST(SceneGolden, GBFacesControlNet) {
-  PATCHLAB_REQUIRE_GL();
-  const DrawScene d = test::file_draw_scene(test::asset("gb-hole-filling.json"), FaceScheme::GB);
-  test::compare_with_golden("gb-faces-control-net",
-                            render_default(d, "shaded+control-net", 640, 480));
-}
-
-TEST(SceneGolden, BSplineControlNet) {
-  PATCHLAB_REQUIRE_GL();
-  const DrawScene d = test::file_draw_scene(test::asset("classic/bspline.json"));
-  test::compare_with_golden("bspline-control-net",
-                            render_default(d, "shaded+control-net", 640, 480));
-}
-
-TEST(SceneGolden, HermiteDerivativeArrows) {
-  PATCHLAB_REQUIRE_GL();
-  const DrawScene d = test::file_draw_scene(test::asset("classic/hermite.json"));
-  test::compare_with_golden("hermite-arrows", render_default(d, "shaded+control-net", 640, 480));
-}
+INSTANTIATE_TEST_SUITE_P(
+    Nets, SceneGolden,
+    ::testing::Values(
+        // The network's points editable, the Gregory twins and GB ribbon rows of its faces
+        // derived.
+        NetCase{"default-point-kinds", "default.json", {}},
+        // GB fillings of network faces: ribbon rows and spokes derived from the network.
+        NetCase{"gb-faces-control-net", "gb-hole-filling.json", FaceScheme::GB},
+        NetCase{"bspline-control-net", "classic/bspline.json", {}},
+        // Tangents and twists as arrows from the corners.
+        NetCase{"hermite-arrows", "classic/hermite.json", {}}),
+    [](const auto& info) {
+      std::string n = info.param.golden;
+      std::replace(n.begin(), n.end(), '-', '_');
+      return n;
+    });
 
 // The GB filling's mean curvature replaced by its signed distance to the Gregory filling (what
 // the comparison's distance colouring shows); returns the largest |distance|.
@@ -73,7 +68,7 @@ double apply_distance(const DrawScene& gregory, DrawScene& gb) {
 
 // The comparison: the Gregory filling shaded with the network, the GB filling coloured by its
 // signed distance to the Gregory one, and the distance legend in the column at the right.
-TEST(SceneGolden, CompareWithDistanceColouringAndLegend) {
+TEST(CompareGolden, DistanceColouringAndLegend) {
   PATCHLAB_REQUIRE_GL();
   const DrawScene gregory = test::file_draw_scene(test::asset("default.json"), FaceScheme::Gregory);
   DrawScene gb = test::file_draw_scene(test::asset("default.json"), FaceScheme::GB);
