@@ -105,7 +105,7 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
   std::vector<std::string> labels;
   if (compare) {
     for (const auto& [s, label] : {std::pair{FaceScheme::Gregory, "Gregory"},
-                                   std::pair{FaceScheme::GB, "Generalized Bezier"}}) {
+                                   std::pair{FaceScheme::GB, "Generalized Bézier"}}) {
       const SceneSurfaces surfaces = evaluate_scene(scene, density, s, cache, file);
       draws.push_back(build_draw_scene(scene, surfaces, teeth));
       labels.push_back(label);
