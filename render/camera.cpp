@@ -101,7 +101,15 @@ void Camera::frame_points(std::span<const Vec3> points, double aspect, double ma
   if (points.empty()) return;
   Box box;
   for (const Vec3& p : points) box.add(p);
-  scene_radius = std::max(box.radius(), 1e-12);
+  if (!(box.radius() > 1e-9 * (1 + glm::length(box.centre())))) {
+    // Everything at one place (a collapsed patch): show that place in a unit box.
+    const Vec3 c = box.centre();
+    box.add(c - Vec3(1.0));
+    box.add(c + Vec3(1.0));
+    frame(box, aspect, margin);
+    return;
+  }
+  scene_radius = box.radius();
   const Vec3 f = forward(), u = up(), r = right();
   // The middle of the extent along right and up, and along the view for the clipping planes.
   double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
