@@ -23,7 +23,7 @@ struct Viewport {
 
 // Sizes of the overlays in pixels at pixel_scale 1 (shared with the point key).
 inline constexpr float kPointSize = 10.0f;          // an editable point's width
-inline constexpr float kDerivedPointScale = 0.78f;  // a derived point's width, relative
+inline constexpr float kDerivedPointScale = 0.85f;  // a derived point's width, relative
 inline constexpr float kArrowWidth = 1.8f, kArrowHead = 11.0f;
 // How visible the parts behind a surface are: enough to read what is there, faint enough not to
 // be taken for the visible part.

@@ -41,10 +41,10 @@ void main() {
   float a = 1.0 - smoothstep(-0.5, 0.5, d);
   if (a <= 0.0) discard;
   vec3 kind_color = u_kind_colors[kind];
-  float rim = clamp(0.2 * r, 0.9, 1.6);  // the dark outline
+  float rim = clamp(0.18 * r, 0.8, 1.6);  // the dark outline
   vec3 c;
   if (derived) {
-    float ring = max(1.4, 0.3 * r);  // the coloured band inside the outline
+    float ring = max(1.0, 0.25 * r);  // the coloured band inside the outline
     c = mix(u_derived_fill, kind_color, smoothstep(-rim - ring - 0.5, -rim - ring + 0.5, d));
   } else {
     c = kind_color;
