@@ -91,6 +91,18 @@ double panel_aspect(const FrameRequest& r) {
   return static_cast<double>(v.width) / v.height;
 }
 
+double panel_aspect(int width, int height, int count, const DisplaySettings& settings,
+                    const ColorRange& range) {
+  FrameRequest r;
+  r.width = width;
+  r.height = height;
+  r.settings = settings;
+  r.range = range;
+  r.point_key = false;
+  r.panels.resize(static_cast<std::size_t>(std::max(1, count)));
+  return panel_aspect(r);
+}
+
 DisplaySettings common_comb_length(const DisplaySettings& settings,
                                    const std::vector<const GpuScene*>& scenes) {
   DisplaySettings s = settings;

@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "render/image.hpp"
@@ -17,6 +18,9 @@
 namespace pl {
 
 struct FramePanel {
+  FramePanel() = default;
+  FramePanel(const GpuScene* s, std::string l = {}) : scene(s), label(std::move(l)) {}
+
   const GpuScene* scene = nullptr;
   std::string label;  // drawn top-left of the panel when non-empty
   // This panel's own settings, range and camera; nullopt: the request's.
@@ -57,6 +61,9 @@ struct FrameLayout {
 FrameLayout frame_layout(const FrameRequest& request);
 // The aspect (width / height) of the first panel: frame the camera for it.
 double panel_aspect(const FrameRequest& request);
+// The same for `count` panels with these settings and range and no point key.
+double panel_aspect(int width, int height, int count, const DisplaySettings& settings,
+                    const ColorRange& range);
 
 // `settings` with comb_length fixed for every panel (the smallest automatic one among them), so
 // that equal teeth side by side mean equal curvature, as one colour range does for the maps.
