@@ -26,6 +26,17 @@ std::array<double, 3> key(const Vec3& p) {
 
 }  // namespace
 
+Polyline curve_polyline(const BezierCurve& c, int segments) {
+  Polyline l;
+  l.reserve(segments + 1);
+  for (int i = 0; i <= segments; ++i) l.push_back(c.point(double(i) / segments));
+  return l;
+}
+
+Polyline edge_polyline(const Network& network, int e, int segments) {
+  return curve_polyline(network.edge_curve(e), segments);
+}
+
 void append_patch_net(DrawScene& d, const Patch& p, PointRole role,
                       const std::map<std::array<double, 3>, uint32_t>* shared) {
   const ControlNetTopology t = control_net_topology(p);
@@ -48,11 +59,8 @@ void append_patch_net(DrawScene& d, const Patch& p, PointRole role,
 
 std::vector<Polyline> network_polylines(const Network& network) {
   std::vector<Polyline> lines;
-  for (std::size_t e = 0; e < network.edges.size(); ++e) {
-    const BezierCurve c = network.edge_curve(static_cast<int>(e));
-    Polyline& l = lines.emplace_back();
-    for (int i = 0; i <= kCurveSegments; ++i) l.push_back(c.point(double(i) / kCurveSegments));
-  }
+  for (std::size_t e = 0; e < network.edges.size(); ++e)
+    lines.push_back(edge_polyline(network, static_cast<int>(e)));
   return lines;
 }
 

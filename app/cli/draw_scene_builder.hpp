@@ -32,6 +32,11 @@ inline constexpr int kCurveSegments = kMinCombEnvelopeSegments;
 
 // Every network edge curve as a polyline of kCurveSegments segments.
 std::vector<Polyline> network_polylines(const Network& network);
+// Network edge e's polyline (one entry of network_polylines, or with fewer segments for an edge
+// that is small on screen).
+Polyline edge_polyline(const Network& network, int e, int segments = kCurveSegments);
+// A curve at t = k / segments, k = 0..segments.
+Polyline curve_polyline(const BezierCurve& curve, int segments);
 // Every network edge's curvature comb (comb_teeth >= 1).
 std::vector<CurvatureComb> network_combs(const Network& network, int comb_teeth);
 

@@ -14,7 +14,7 @@ SurfaceMesh make_surface_mesh(const PatchEvaluator& ev, std::string name) {
   m.kmax.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const SurfaceGeometry& g = ev.geometry()[i];
-    m.positions[i] = ev.jets()[i].p;
+    m.positions[i] = ev.position(i);
     m.normals[i] = g.normal;
     m.gaussian[i] = g.gaussian;
     m.mean[i] = g.mean;
