@@ -3,6 +3,7 @@
 #include "app/cli/commands.hpp"
 #include "app/cli/load_input.hpp"
 #include "core/analysis/scene_analysis.hpp"
+#include "core/mesh/finite_check.hpp"
 
 namespace pl {
 
@@ -15,6 +16,8 @@ int run_analyze(std::span<const std::string> args, std::ostream& out, std::ostre
   const Scene scene = load_input(file);
   TessellationCache cache;
   const SceneSurfaces surfaces = evaluate_scene(scene, density, scheme, cache, file);
+  // The report's figures are finite only if every sample is.
+  for (const SceneSurface& s : surfaces.surfaces) check_finite(*s.evaluator, s.name, file);
   const SceneReport report = analyze_scene(scene, surfaces);
   out << (a.flag("--json") ? report_to_json(report) : report_to_text(report));
   return kExitOk;

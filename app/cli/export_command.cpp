@@ -22,7 +22,7 @@ int run_export(std::span<const std::string> args, std::ostream& out, std::ostrea
   std::vector<SurfaceMesh> meshes;
   for (const SceneSurface& s : surfaces.surfaces)
     meshes.push_back(make_surface_mesh(*s.evaluator, s.name));
-  export_meshes(meshes, *target);
+  export_meshes(meshes, *target, file);
   out << "wrote " << meshes.size() << " patch(es) to " << *target << "\n";
   return kExitOk;
 }

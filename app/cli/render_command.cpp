@@ -11,6 +11,7 @@
 #include "app/cli/load_input.hpp"
 #include "core/io/atomic_file.hpp"
 #include "core/io/data_error.hpp"
+#include "core/mesh/finite_check.hpp"
 #include "render/egl_context.hpp"
 #include "render/frame.hpp"
 
@@ -123,6 +124,7 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
       box.add(b.hi);
     }
     for (const SurfaceMesh& m : d.surfaces) meshes.push_back(&m);
+    check_finite(d.surfaces, file);  // a NaN would draw nothing, or garbage, without a word
   }
   FrameRequest request;
   request.width = width;

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <set>
 
+#include "core/io/input_limits.hpp"
+
 namespace pl {
 
 namespace {
@@ -25,6 +27,12 @@ const char* type_name(const nlohmann::json& j) {
   }
 }
 }  // namespace
+
+std::string short_number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", x);
+  return buf;
+}
 
 std::string printable(std::string_view s) {
   std::string r;
@@ -136,7 +144,14 @@ std::string JsonNode::string() const {
 
 Vec3 JsonNode::point() const {
   const auto c = items(3);
-  return {c[0].number(), c[1].number(), c[2].number()};
+  Vec3 p;
+  for (int k = 0; k < 3; ++k) {
+    p[k] = c[k].number();
+    if (std::fabs(p[k]) > kMaxCoordinate)
+      c[k].fail("coordinate " + c[k].raw().dump() + " is out of range: |x| <= " +
+                short_number(kMaxCoordinate) + " keeps squared lengths finite");
+  }
+  return p;
 }
 
 std::vector<Vec3> JsonNode::points() const {

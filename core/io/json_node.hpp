@@ -37,7 +37,7 @@ class JsonNode {
   long long integer() const;
   int integer_in(long long lo, long long hi) const;
   std::string string() const;
-  Vec3 point() const;  // [x, y, z]
+  Vec3 point() const;  // [x, y, z], each |x| <= kMaxCoordinate (core/io/input_limits.hpp)
   std::vector<Vec3> points() const;
 
  private:
@@ -58,5 +58,7 @@ inline constexpr int kMaxJsonDepth = 64;
 // s with control characters (a JSON key may hold "\u0000") written as \uXXXX, so that a message
 // quoting user text is printed whole, on one line.
 std::string printable(std::string_view s);
+// x with 3 significant digits ("1.5e-154"), for messages.
+std::string short_number(double x);
 
 }  // namespace pl
