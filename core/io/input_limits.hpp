@@ -4,6 +4,8 @@
 
 #include <cstddef>
 
+#include "core/patch/catmull_clark_limit.hpp"
+
 namespace pl {
 
 // A scene or .gbp file is read whole and parsed in memory (about ten times its size).
@@ -22,11 +24,10 @@ inline constexpr double kMinSpan = 1.5e-154;
 // A network face or GB patch has at most this many sides.
 inline constexpr int kMaxFaceSides = 64;
 
-// A Catmull-Clark control mesh: at most kMaxCatmullClarkValence vertices in a face and faces
-// around a vertex (the limit stencils near such a vertex hold every vertex of its ring:
-// the work grows with the square of it), at most kMaxCatmullClarkVertices vertices in all.
-inline constexpr int kMaxCatmullClarkValence = 256;
-inline constexpr std::size_t kMaxCatmullClarkVertices = 1 << 16;
+// A Catmull-Clark control mesh: at most this many vertices in a face and faces around a vertex,
+// and vertices in all (core/patch/catmull_clark_limit.hpp says why).
+inline constexpr int kMaxCatmullClarkValence = CatmullClarkLimit::kMaxValence;
+inline constexpr std::size_t kMaxCatmullClarkVertices = CatmullClarkLimit::kMaxVertices;
 
 // Sampling: --density N samples each boundary curve at t = k/N; the whole scene evaluates at most
 // kMaxSamples samples (about 200 bytes each: 3.4 GB at the limit).
