@@ -9,6 +9,8 @@
 #include "app/cli/commands.hpp"
 #include "app/cli/draw_scene_builder.hpp"
 #include "app/cli/load_input.hpp"
+#include "app/cli/work_limits.hpp"
+#include "core/io/input_limits.hpp"
 #include "core/io/atomic_file.hpp"
 #include "core/io/data_error.hpp"
 #include "core/mesh/finite_check.hpp"
@@ -85,7 +87,7 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
   const auto target = a.value("-o");
   if (!target || !ends_with_png(*target)) throw UsageError("render needs -o OUT.png");
   const auto [width, height] = parse_size(a.value("--size"));
-  const int density = a.integer("--density", 32, 1, 4096);
+  const int density = a.integer("--density", 32, 1, kMaxDensity);
   const auto scheme = parse_scheme_option(a.value("--scheme"));
   const bool compare = a.flag("--compare");
   if (compare && scheme) throw UsageError("--compare renders both schemes; drop --scheme");
@@ -95,6 +97,7 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
 
   const std::string file = a.positional()[0];
   const Scene scene = load_input(file);
+  check_work_limits(scene, density, file);
   if (compare && !scene.network)
     throw DataError(file, "", "--compare needs a scene with a curve network");
   TessellationCache cache;

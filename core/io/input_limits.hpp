@@ -29,9 +29,10 @@ inline constexpr int kMaxFaceSides = 64;
 inline constexpr int kMaxCatmullClarkValence = CatmullClarkLimit::kMaxValence;
 inline constexpr std::size_t kMaxCatmullClarkVertices = CatmullClarkLimit::kMaxVertices;
 
-// Sampling: --density N samples each boundary curve at t = k/N; the whole scene evaluates at most
-// kMaxSamples samples (about 200 bytes each: 3.4 GB at the limit).
+// Sampling: --density N samples each boundary curve at t = k/N; a command evaluates at most
+// kMaxSamples samples in all (jet, geometry, tessellation and mesh take about 400 bytes a
+// sample: 1.7 GB at the limit), checked from the scene before any evaluation.
 inline constexpr int kMaxDensity = 4096;
-inline constexpr std::size_t kMaxSamples = std::size_t(1) << 24;
+inline constexpr std::size_t kMaxSamples = std::size_t(1) << 22;
 
 }  // namespace pl
