@@ -3,8 +3,8 @@
 #include "app/cli/commands.hpp"
 #include "app/cli/load_input.hpp"
 #include "app/cli/work_limits.hpp"
-#include "core/io/input_limits.hpp"
 #include "core/analysis/scene_analysis.hpp"
+#include "core/io/input_limits.hpp"
 #include "core/mesh/finite_check.hpp"
 
 namespace pl {

@@ -3,8 +3,8 @@
 #include "app/cli/commands.hpp"
 #include "app/cli/load_input.hpp"
 #include "app/cli/work_limits.hpp"
-#include "core/io/input_limits.hpp"
 #include "core/eval/scene_surfaces.hpp"
+#include "core/io/input_limits.hpp"
 #include "core/mesh/mesh_export.hpp"
 
 namespace pl {

@@ -43,8 +43,8 @@ void check_work_limits(const Scene& scene, int density, const std::string& sourc
   const std::size_t n = estimated_samples(scene, density);
   if (n <= kMaxSamples) return;
   // Samples grow with the square of the density.
-  const int fits = std::max(
-      1, static_cast<int>((density + 1) * std::sqrt(double(kMaxSamples) / double(n))) - 1);
+  const int fits =
+      std::max(1, static_cast<int>((density + 1) * std::sqrt(double(kMaxSamples) / double(n))) - 1);
   throw DataError(source, "",
                   "at density " + std::to_string(density) + " the scene takes about " +
                       std::to_string(n) + " samples; at most " + std::to_string(kMaxSamples) +

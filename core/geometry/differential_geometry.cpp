@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cfloat>
 #include <cmath>
 #include <utility>
 
@@ -97,7 +98,8 @@ template <class T>
   const T det = dot(c, c);  // EG - F^2 = |Su x Sv|^2, computed directly for accuracy
   const T E = dot(su, su), F = dot(su, sv), G = dot(sv, sv);
   // Squared lengths compared: no square roots on the hot path of every drag update.
-  g.regular = (det > kSingularSine * kSingularSine * (E * G)) & (det > 0) & (det - det == 0);
+  // A subnormal det (a surface of size 1e-80) has lost its digits: rescaled_geometry takes it.
+  g.regular = (det > kSingularSine * kSingularSine * (E * G)) & (det >= DBL_MIN) & (det - det == 0);
   const T scale = 1.0 / square_root(det);
   const V3<T> n{c.x * scale, c.y * scale, c.z * scale};
   const T L = dot(suu, n), M = dot(suv, n), N = dot(svv, n);
@@ -108,6 +110,7 @@ template <class T>
   const T disc = square_root(non_negative(g.mean * g.mean - g.gaussian));
   g.kmin = g.mean - disc;
   g.kmax = g.mean + disc;
+  g.regular = g.regular & (g.gaussian - g.gaussian == 0) & (g.mean - g.mean == 0);  // finite
   return g;
 }
 

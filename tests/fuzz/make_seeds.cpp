@@ -59,13 +59,14 @@ int main(int argc, char** argv) {
     std::vector<pl::Vec3> v;
     for (int i = 0; i < 8; ++i) v.push_back({double(i & 1), double((i >> 1) & 1), double(i >> 2)});
     pl::Scene s;
-    s.patches.push_back({"cube", std::make_shared<pl::CatmullClarkPatch>(
-                                     v, std::vector<std::vector<int>>{{0, 2, 3, 1},
-                                                                      {4, 5, 7, 6},
-                                                                      {0, 1, 5, 4},
-                                                                      {2, 6, 7, 3},
-                                                                      {0, 4, 6, 2},
-                                                                      {1, 3, 7, 5}})});
+    s.patches.push_back(
+        {"cube",
+         std::make_shared<pl::CatmullClarkPatch>(v, std::vector<std::vector<int>>{{0, 2, 3, 1},
+                                                                                  {4, 5, 7, 6},
+                                                                                  {0, 1, 5, 4},
+                                                                                  {2, 6, 7, 3},
+                                                                                  {0, 4, 6, 2},
+                                                                                  {1, 3, 7, 5}})});
     save(dir / "scene" / "catmull_clark_cube.json", pl::scene_to_json(s));
     ++count;
   }

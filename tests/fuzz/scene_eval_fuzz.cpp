@@ -39,8 +39,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
     // Finite by construction: the report of finite samples holds finite numbers.
     const pl::SceneReport r = pl::analyze_scene(scene, surfaces);
     for (const pl::PatchReport& p : r.patches)
-      for (double x : {p.max_boundary_deviation, p.gaussian[0], p.gaussian[1], p.mean[0],
-                       p.mean[1]})
+      for (double x :
+           {p.max_boundary_deviation, p.gaussian[0], p.gaussian[1], p.mean[0], p.mean[1]})
         if (!std::isfinite(x)) __builtin_trap();
     for (const pl::EdgeReport& e : r.edges)
       for (double x : {e.max_gap, e.max_normal_angle_deg, e.max_mean_curvature_jump})
