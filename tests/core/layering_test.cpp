@@ -1,5 +1,6 @@
 // The dependency rule of the design card: core/ knows no GL, GLFW, ImGui, render/ or app/;
-// render/ knows no GLFW, ImGui or app/.
+// render/ knows no GLFW, ImGui or app/; the editor's logic (app/editor/logic) knows no window,
+// UI or GL.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -52,6 +53,17 @@ TEST(Layering, CoreIncludesNoGraphicsUiRenderOrApp) {
 
 TEST(Layering, RenderIncludesNoWindowUiOrApp) {
   const auto bad = offending("render", {"GLFW/", "imgui", "backends/", "app/"});
+  EXPECT_TRUE(bad.empty()) << bad.front();
+}
+
+TEST(Layering, EditorLogicIncludesNoWindowUiOrGl) {
+  // The editor's logic is GUI-free: it may use the renderer's plain data (cameras, draw scenes,
+  // display settings) but nothing that needs a window or a GL context.
+  const auto bad = offending(
+      "app/editor/logic",
+      {"GL/", "GLES", "GLFW/", "EGL/", "KHR/", "epoxy/", "imgui", "backends/", "render/gl",
+       "render/gpu_scene", "render/scene_renderer", "render/egl_context", "render/offscreen_target",
+       "render/frame", "app/editor/evaluated_view", "app/editor/gl_window"});
   EXPECT_TRUE(bad.empty()) << bad.front();
 }
 
