@@ -34,25 +34,43 @@ class OwnStencilTable final : public Far::StencilTableReal<double> {
                                       static_cast<std::size_t>(control_vertices)) {}
 };
 
-// A stencil while it is built: (base vertex, weight) entries, merged by compress().
+// A stencil while it is built: (base vertex, weight) entries, appended by the refiner and
+// merged by a Merger.
 struct StencilBuild {
   std::vector<std::pair<int, double>> e;
   void Clear(void* = nullptr) { e.clear(); }
   void AddWithWeight(const StencilBuild& s, double w) {
     for (const auto& [v, x] : s.e) e.emplace_back(v, x * w);
   }
-  void compress() {
-    std::sort(e.begin(), e.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    std::size_t out = 0;
-    for (std::size_t k = 0; k < e.size(); ++k) {
-      if (out > 0 && e[out - 1].first == e[k].first)
-        e[out - 1].second += e[k].second;
-      else
-        e[out++] = e[k];
-    }
-    e.resize(out);
-    e.shrink_to_fit();  // the appended entries were many times the merged ones near a big ring
+};
+
+// Merges entries by vertex through a dense row over the base vertices: O(entries), where
+// sorting the appended entries (16 parents of n entries each near an n-ring) cost a log factor
+// and most of the construction.
+class Merger {
+ public:
+  explicit Merger(std::size_t vertices) : row_(vertices, 0.0), seen_(vertices, 0) {}
+  void add(int v, double w) {
+    if (!seen_[v]) seen_[v] = 1, touched_.push_back(v);
+    row_[v] += w;
   }
+  // The merged stencil, vertices ascending; the row is clean again.
+  void take(StencilBuild& out) {
+    std::sort(touched_.begin(), touched_.end());
+    out.e.clear();
+    out.e.shrink_to_fit();  // the appended entries were many times the merged ones
+    out.e.reserve(touched_.size());
+    for (const int v : touched_) {
+      out.e.emplace_back(v, row_[v]);
+      row_[v] = 0, seen_[v] = 0;
+    }
+    touched_.clear();
+  }
+
+ private:
+  std::vector<double> row_;
+  std::vector<char> seen_;
+  std::vector<int> touched_;
 };
 
 }  // namespace
@@ -206,43 +224,37 @@ CatmullClarkLimit::CatmullClarkLimit(std::size_t n, const std::vector<std::vecto
 // OpenSubdiv's StencilTableFactory merges each added weight by a linear search through the
 // stencil being built: next to an n-valent vertex, where every stencil holds the whole ring,
 // that is O(n^2) per vertex and O(n^3) in all (6 s for a 256-gon). Here every level is
-// interpolated with stencils as the primvar and merged once by sorting: O(n log n) per vertex.
+// interpolated with stencils as the primvar and merged once through a dense row: O(n) per
+// vertex.
 void CatmullClarkLimit::build_stencils() {
   const Far::TopologyRefiner& r = *osd_->refiner;
   std::vector<StencilBuild> all(r.GetNumVerticesTotal());
   const int base = r.GetLevel(0).GetNumVertices();
   for (int v = 0; v < base; ++v) all[v].e = {{v, 1.0}};
   const Far::PrimvarRefinerReal<double> primvar(r);
+  Merger merger(base);
   for (int level = 1, first = 0; level <= r.GetMaxLevel(); ++level) {
     const int before = r.GetLevel(level - 1).GetNumVertices();
     StencilBuild* src = all.data() + first;
     StencilBuild* dst = src + before;
     primvar.Interpolate(level, src, dst);
-    for (int v = 0; v < r.GetLevel(level).GetNumVertices(); ++v) dst[v].compress();
+    for (int v = 0; v < r.GetLevel(level).GetNumVertices(); ++v) {
+      for (const auto& [u, w] : dst[v].e) merger.add(u, w);
+      merger.take(dst[v]);
+    }
     first += before;
   }
   // End-cap points: each a stencil over the last level's vertices (an extraordinary vertex's
-  // whole ring for the points at it), summed into one dense row: O(entries), no sorting.
+  // whole ring for the points at it).
   if (const auto* local = osd_->patches->GetLocalPointStencilTable<double>()) {
     const std::size_t refined = all.size();
     all.resize(refined + local->GetNumStencils());
-    std::vector<double> row(base, 0.0);
-    std::vector<char> seen(base, 0);
-    std::vector<int> touched;
     for (int i = 0; i < local->GetNumStencils(); ++i) {
       const auto st = local->GetStencil(i);
-      touched.clear();
       for (int k = 0; k < st.GetSize(); ++k)
-        for (const auto& [v, w] : all.at(st.GetVertexIndices()[k]).e) {
-          if (!seen[v]) seen[v] = 1, touched.push_back(v);
-          row[v] += w * st.GetWeights()[k];
-        }
-      std::sort(touched.begin(), touched.end());
-      StencilBuild& b = all[refined + i];
-      for (const int v : touched) {
-        b.e.emplace_back(v, row[v]);
-        row[v] = 0, seen[v] = 0;
-      }
+        for (const auto& [v, w] : all.at(st.GetVertexIndices()[k]).e)
+          merger.add(v, w * st.GetWeights()[k]);
+      merger.take(all[refined + i]);
     }
   }
   std::vector<int> offsets, sizes, sources;

@@ -192,9 +192,10 @@ TEST(HostileCli, WorkIsBoundedBeforeItStarts) {
   // A 10,004-index Catmull-Clark face grew to 3.85 GB before failing without a file name.
   std::string loop, verts;
   for (int i = 0; i < 10004; ++i) {
-    loop += (i ? "," : "") + std::to_string(i);
-    verts += std::string(i ? "," : "") + "[" + std::to_string(std::cos(i * 1e-3)) + "," +
-             std::to_string(std::sin(i * 1e-3)) + ",0]";
+    if (i) loop += ",", verts += ",";
+    loop += std::to_string(i);
+    verts += "[" + std::to_string(std::cos(i * 1e-3)) + "," + std::to_string(std::sin(i * 1e-3)) +
+             ",0]";
   }
   const auto f = dir.file("huge.json", R"({"patchlab":1,"patches":[{"type":"catmull-clark",)"
                                        R"("vertices":[)" +

@@ -173,7 +173,10 @@ TEST(HostileInput, CatmullClarkFacesWithARepeatedVertexAreRefusedNotAborted) {
 TEST(HostileInput, CatmullClarkFaceSizeIsBounded) {
   const int n = CatmullClarkLimit::kMaxValence + 1;
   std::string loop = "[[";
-  for (int i = 0; i < n; ++i) loop += (i ? "," : "") + std::to_string(i);
+  for (int i = 0; i < n; ++i) {
+    if (i) loop += ",";
+    loop += std::to_string(i);
+  }
   const DataError e = scene_error(cc_scene(loop + "]]", n));
   EXPECT_EQ(e.where(), "patches[0].faces[0]");
   EXPECT_NE(e.message().find("at most 256 vertices"), std::string::npos) << e.what();
