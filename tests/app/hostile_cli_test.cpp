@@ -194,8 +194,11 @@ TEST(HostileCli, WorkIsBoundedBeforeItStarts) {
   for (int i = 0; i < 10004; ++i) {
     if (i) loop += ",", verts += ",";
     loop += std::to_string(i);
-    verts += "[" + std::to_string(std::cos(i * 1e-3)) + "," + std::to_string(std::sin(i * 1e-3)) +
-             ",0]";
+    verts += "[";
+    verts += std::to_string(std::cos(i * 1e-3));
+    verts += ",";
+    verts += std::to_string(std::sin(i * 1e-3));
+    verts += ",0]";
   }
   const auto f = dir.file("huge.json", R"({"patchlab":1,"patches":[{"type":"catmull-clark",)"
                                        R"("vertices":[)" +
