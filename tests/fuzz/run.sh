@@ -13,7 +13,7 @@ shift || true
 dir=build-fuzz
 CC=clang CXX=clang++ cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DPATCHLAB_FUZZ=ON >/dev/null
-cmake --build "$dir"
+cmake --build "$dir" --target scene_reader_fuzz gbp_reader_fuzz scene_eval_fuzz patchlab_fuzz_seeds
 
 # Seeds: the scenes of assets/ and the inputs the library generates (every patch type it writes,
 # networks, .gbp files); the evaluation target's inputs start with a density byte.
