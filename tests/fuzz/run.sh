@@ -39,7 +39,7 @@ run() {  # target, seed folder, extra options
   mkdir -p "$corpus"
   echo "== $target: ${seconds} s"
   if ! "$dir/tests/fuzz/$target" "$corpus" "$seeds/$seed" -max_total_time="$seconds" \
-      -rss_limit_mb=2048 -timeout=20 -max_len=8192 -print_final_stats=1 \
+      -rss_limit_mb=2048 -timeout=60 -max_len=8192 -print_final_stats=1 \
       -artifact_prefix="$dir/findings/$target-" "$@" 2>"$dir/$target.log"; then
     status=1
     echo "== $target: FINDING (log: $dir/$target.log)"
