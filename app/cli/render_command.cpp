@@ -9,8 +9,11 @@
 #include "app/cli/commands.hpp"
 #include "app/cli/draw_scene_builder.hpp"
 #include "app/cli/load_input.hpp"
+#include "app/cli/work_limits.hpp"
 #include "core/io/atomic_file.hpp"
 #include "core/io/data_error.hpp"
+#include "core/io/input_limits.hpp"
+#include "core/mesh/finite_check.hpp"
 #include "render/default_view.hpp"
 #include "render/egl_context.hpp"
 #include "render/frame.hpp"
@@ -85,7 +88,7 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
   const auto target = a.value("-o");
   if (!target || !ends_with_png(*target)) throw UsageError("render needs -o OUT.png");
   const auto [width, height] = parse_size(a.value("--size"));
-  const int density = a.integer("--density", 32, 1, 4096);
+  const int density = a.integer("--density", 32, 1, kMaxDensity);
   const auto scheme = parse_scheme_option(a.value("--scheme"));
   const bool compare = a.flag("--compare");
   if (compare && scheme) throw UsageError("--compare renders both schemes; drop --scheme");
@@ -96,6 +99,7 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
 
   const std::string file = a.positional()[0];
   const Scene scene = load_input(file);
+  check_work_limits(scene, density, file);
   if (compare && !scene.network)
     throw DataError(file, "", "--compare needs a scene with a curve network");
   TessellationCache cache;
@@ -126,6 +130,7 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
       box.add(b.hi);
     }
     for (const SurfaceMesh& m : d.surfaces) meshes.push_back(&m);
+    check_finite(d.surfaces, file);  // a NaN would draw nothing, or garbage, without a word
     scenes.push_back(&d);
   }
   FrameRequest request;

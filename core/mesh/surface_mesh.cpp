@@ -24,6 +24,7 @@ SurfaceMesh make_surface_mesh(const PatchEvaluator& ev, std::string name) {
   // Domains are counter-clockwise and the normal is Su x Sv, so domain triangles are already
   // oriented towards the normal.
   m.triangles = ev.tessellation().triangles;
+  m.params = ev.tessellation().points;
   m.revision = ev.revision();
   return m;
 }
