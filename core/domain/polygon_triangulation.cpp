@@ -103,8 +103,14 @@ class Mesh {
       const double o1 = orient(p_[a], p_[b], p_[p]), o2 = orient(p_[b], p_[c], p_[p]);
       const double o3 = orient(p_[c], p_[a], p_[p]);
       if (o1 < 0 || o2 < 0 || o3 < 0) continue;
-      if (o1 == 0 || o2 == 0 || o3 == 0) return false;
+      const int zeros = (o1 == 0) + (o2 == 0) + (o3 == 0);
+      if (zeros > 1) return false;  // p is a vertex already
       last_ = t;
+      // On an edge: grid points are often collinear with an edge between two earlier points of
+      // their row (any insertion order but raster order makes such edges); split it.
+      if (o1 == 0) return insert_on_edge(t, a, b, p);
+      if (o2 == 0) return insert_on_edge(t, b, c, p);
+      if (o3 == 0) return insert_on_edge(t, c, a, p);
       replace(t, a, b, p);
       add(b, c, p);
       add(c, a, p);
@@ -119,6 +125,23 @@ class Mesh {
   const std::vector<std::array<uint32_t, 3>>& triangles() const { return tris_; }
 
  private:
+  // p lies on the edge x->y of triangle t (inside the segment): both triangles on the edge are
+  // split in two. False on a boundary edge (p is not an interior point).
+  bool insert_on_edge(uint32_t t, uint32_t x, uint32_t y, uint32_t p) {
+    const long u = find(y, x);
+    if (u < 0 || is_fixed(x, y)) return false;
+    const uint32_t c = third(t, x, y), d = third(uint32_t(u), y, x);
+    replace(t, x, p, c);
+    add(p, y, c);
+    replace(uint32_t(u), y, p, d);
+    add(p, x, d);
+    legalize(y, c, p);
+    legalize(c, x, p);
+    legalize(x, d, p);
+    legalize(d, y, p);
+    return true;
+  }
+
   // The triangle holding p, found by walking from the last insertion towards p (interior points
   // come in tessellation order, so the walk is short): O(1) per point where scanning every
   // triangle made the whole tessellation O(N^2) (density 128 took seconds, 1000 hours). Where the
