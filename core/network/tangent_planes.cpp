@@ -33,6 +33,10 @@ double edge_extent(const Network& net, int e) {
 // The right-hand (Newell) normal of a face's boundary control polygon: which way the face faces,
 // whatever its corners do (a reflex corner's own normal points the other way).
 Vec3 face_polygon_normal(const Network& net, const NetworkTopology& topo, int f) {
+  // Points relative to the first one: the sum is then translation-invariant (no cancellation
+  // far from the origin), and each term is a product of two point differences, finite for every
+  // coordinate the readers accept; its length is taken after scaling by the largest component,
+  // as the squared length of a sum of such products can overflow.
   Vec3 n(0), first(0), previous(0);
   bool started = false;
   for (const FaceSide& side : topo.face_sides[f]) {
@@ -40,16 +44,16 @@ Vec3 face_polygon_normal(const Network& net, const NetworkTopology& topo, int f)
     for (int j = 0; j < 3; ++j) {
       const Vec3& p = pts[side.reversed ? 3 - j : j];
       if (started)
-        n += glm::cross(previous, p);
+        n += glm::cross(previous - first, p - first);
       else
         first = p;
       started = true;
       previous = p;
     }
   }
-  n += glm::cross(previous, first);
-  const double len = glm::length(n);
-  return len > 0 ? n / len : n;
+  const double largest = std::max({std::abs(n.x), std::abs(n.y), std::abs(n.z)});
+  if (!(largest > 0) || !std::isfinite(largest)) return Vec3(0);
+  return glm::normalize(n / largest);
 }
 
 bool used_by_a_face(const NetworkTopology& topo, int v) {
