@@ -68,7 +68,7 @@ TEST(HostileCli, CatmullClarkRepeatedVertexExitsOneWithOneLine) {
     const auto f = dir.file(
         "cc.json", std::string(R"({"patchlab":1,"patches":[{"type":"catmull-clark",)") +
                        R"("vertices":[[0,0,0],[1,0,0],[1,1,0],[0,1,0]],"faces":)" + faces + "}]}");
-    for (const std::string cmd :
+    for (const std::string& cmd :
          {"analyze " + f.string(), "export " + f.string() + " -o " + (dir / "o.obj").string()}) {
       const Ran r = run_binary(cmd);
       EXPECT_EQ(r.code, 1) << cmd << "\n" << r.output;  // was 134: OpenMesh's assertion
