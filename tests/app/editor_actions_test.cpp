@@ -86,23 +86,26 @@ TEST(EditorActions, MenusKeysAndContext) {
   EXPECT_EQ(r.conflicts()[0], "Ctrl+S: file.save, other.save");
 }
 
-TEST(EditorActions, HelpListsEveryKeyThenTheMouse) {
+TEST(EditorActions, HelpListsEveryKeyThenTheMouseThenTheMenuOnlyCommands) {
   ActionRegistry r;
   Counter c;
   Action a = counting("view.frame", "View", c, {*parse_chord("F"), *parse_chord("Shift+F")});
   a.help = "frame all / selection";
   r.add(std::move(a));
-  r.add(counting("file.export", "File", c));  // no key: not in F1
+  r.add(counting("file.export", "File/Mesh", c));  // no key: listed by its menu place
+  r.add(counting("hidden", "", c));                // neither key nor menu: not a command
   Action nudge = counting("edit.nudge", "", c, {*parse_chord("Left")});
   nudge.keys_text = "Arrows";
   r.add(std::move(nudge));
   const auto rows = help_rows(r, {{"Wheel", "zoom"}});
-  ASSERT_EQ(rows.size(), 3u);
+  ASSERT_EQ(rows.size(), 4u);
   EXPECT_EQ(rows[0].keys, "F, Shift+F");
   EXPECT_EQ(rows[0].what, "frame all / selection");
   EXPECT_EQ(rows[1].keys, "Arrows");
   EXPECT_EQ(rows[1].what, "edit.nudge");
   EXPECT_EQ(rows[2].keys, "Wheel");
+  EXPECT_EQ(rows[3].keys, "File > Mesh > file.export");
+  EXPECT_EQ(rows[3].what, "file.export");
 }
 
 }  // namespace

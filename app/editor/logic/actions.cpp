@@ -189,15 +189,25 @@ std::vector<std::string> ActionRegistry::conflicts() const {
 }
 
 std::vector<HelpRow> help_rows(const ActionRegistry& actions, const std::vector<HelpRow>& mouse) {
-  std::vector<HelpRow> rows;
+  std::vector<HelpRow> rows, menu_only;
   for (const Action& a : actions.all()) {
-    if (a.keys.empty() && a.keys_text.empty()) continue;
+    const std::string what = a.help.empty() ? a.label : a.help;
+    if (a.keys.empty() && a.keys_text.empty()) {
+      // Reached from a menu only: its place there instead of a key ("Network > Fill Holes").
+      if (a.menu.empty()) continue;
+      std::string place = a.menu;
+      for (std::size_t i = 0; (i = place.find('/', i)) != std::string::npos; i += 3)
+        place.replace(i, 1, " > ");
+      menu_only.push_back({place + " > " + a.label, what});
+      continue;
+    }
     std::string keys = a.keys_text;
     if (keys.empty())
       for (const KeyChord& k : a.keys) keys += (keys.empty() ? "" : ", ") + to_string(k);
-    rows.push_back({keys, a.help.empty() ? a.label : a.help});
+    rows.push_back({keys, what});
   }
   rows.insert(rows.end(), mouse.begin(), mouse.end());
+  rows.insert(rows.end(), menu_only.begin(), menu_only.end());
   return rows;
 }
 
