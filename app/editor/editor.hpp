@@ -162,8 +162,9 @@ class Editor {
     bool positions = false;
     uint64_t selection = 0;
     int menu_frames = 0;
-    std::string state;    // the last state report (printed again only when it changes)
-    std::string message;  // the last status message printed
+    std::string state;        // the last state report (printed again only when it changes)
+    std::string message;      // the last status message printed
+    bool text_input = false;  // a text field had the keyboard
   } debug_;
   RenamePopup rename_;
 

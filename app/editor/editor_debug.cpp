@@ -11,8 +11,9 @@
 //   pointer down|up B X Y [shift] [ctrl] [alt]   (as the frame saw the press or release)
 //   pointer at X Y                               (the cursor moved while a button is held)
 //   status MESSAGE                               (every new status-bar message)
+//   text-input 1|0                               (a text field took or gave up the keyboard)
 // and, whenever it changed, the state at rest (no button held, no drag, fine surfaces shown):
-//   state revision R vertices V edges E faces F tool NAME selected N can-undo U can-redo D
+//   state revision R vertices V edges E faces F selected N can-undo U can-redo D tool NAME
 //   view OX OY XX XY YX YY ZX ZY window WX WY    (pixels of the world origin and of the unit
 //                                                 points on x, y, z: affine in orthographic)
 //   vertex I X Y
@@ -109,6 +110,10 @@ void Editor::report_state() {
   const bool held = io.MouseDown[0] || io.MouseDown[1] || io.MouseDown[2];
   if (held && (io.MouseDelta.x != 0 || io.MouseDelta.y != 0))
     std::printf("pointer at %.0f %.0f\n", io.MousePos.x, io.MousePos.y);
+  if (io.WantTextInput != debug_.text_input) {
+    debug_.text_input = io.WantTextInput;
+    std::printf("text-input %d\n", int(io.WantTextInput));
+  }
   const std::string message = status_.message();
   if (message != debug_.message) {
     debug_.message = message;
@@ -125,9 +130,9 @@ void Editor::report_state() {
   const Network& net = scene.network ? *scene.network : none;
   std::ostringstream out;
   out << "state revision " << doc.revision() << " vertices " << net.vertices.size() << " edges "
-      << net.edges.size() << " faces " << net.faces.size() << " tool " << tools_.active().name()
-      << " selected " << selection_.size() << " can-undo " << doc.can_undo() << " can-redo "
-      << doc.can_redo() << "\n";
+      << net.edges.size() << " faces " << net.faces.size() << " selected " << selection_.size()
+      << " can-undo " << doc.can_undo() << " can-redo " << doc.can_redo() << " tool "
+      << tools_.active().name() << "\n";
   int wx = 0, wy = 0;
   glfwGetWindowPos(window_.handle(), &wx, &wy);
   out << "view";

@@ -26,8 +26,10 @@ class State:
     """One state report: counts, tool and the window pixels of everything clickable."""
 
     def __init__(self, lines):
-        head = lines[0].split()
+        counts, tool = lines[0].split(" tool ", 1)  # the tool's name is last and may have spaces
+        head = counts.split()
         self.fields = {head[i]: head[i + 1] for i in range(1, len(head) - 1, 2)}
+        self.fields["tool"] = tool
         self.revision = int(self.fields["revision"])
         self.vertices, self.edges, self.faces, self.knobs = {}, {}, {}, {}
         for line in lines[1:]:
@@ -67,7 +69,7 @@ class Editor:
         self.err = open(self.err_path, "w")
         self.proc = subprocess.Popen([binary, *args, "--debug-state"], cwd=os.path.join(workdir, "cwd"),
                                      stdout=self.log, stderr=self.err, env=env)
-        self.seen = 0  # lines of the log already consumed by waits
+        self.seen = 0  # wait_line() looks at the log from here: where the last action began
         self.window = None
 
     # --- reading the log -------------------------------------------------------------------
@@ -76,8 +78,8 @@ class Editor:
             return f.read().splitlines()
 
     def wait_line(self, pattern, what=None, since=None):
-        """Waits for a log line matching `pattern` after line `since` (default: the last one
-        consumed); returns its match and consumes the log up to it."""
+        """Waits for a log line matching `pattern` from line `since` on (default: the line the
+        last action began at, so whatever it caused is found in any order); returns its match."""
         start = self.seen if since is None else since
         rx = re.compile(pattern)
         deadline = time.time() + TIMEOUT
@@ -86,7 +88,6 @@ class Editor:
             for i in range(start, len(lines)):
                 m = rx.search(lines[i])
                 if m:
-                    self.seen = i + 1
                     return m
             if self.proc.poll() is not None:
                 raise EditorError(f"the editor exited ({self.proc.returncode}) waiting for "
@@ -130,12 +131,22 @@ class Editor:
         last = self.states()[-1].fields if self.states() else None
         raise EditorError(f"timed out waiting for {what}; last state {last}")
 
-    def wait_change(self, what, predicate=lambda s: True):
-        """Waits for a state report newer than the current one that satisfies `predicate`."""
-        before = len(self.states())
-        return self.wait_state(lambda s: len(self.states()) > before and predicate(s), what)
+    def mark(self):
+        """The number of state reports so far: take it before acting, then wait_change(mark)."""
+        return len(self.states())
+
+    def wait_change(self, mark, what, predicate=lambda s: True):
+        """Waits for a state report after `mark` (see mark()) that satisfies `predicate`."""
+        def newer(s):
+            return len(self.states()) > mark and predicate(s)
+        return self.wait_state(newer, what)
 
     # --- acting ------------------------------------------------------------------------------
+    def _act(self):
+        """Marks where the next action begins in the log (see wait_line)."""
+        self.seen = len(self.lines())
+        return self.seen
+
     def screen(self, p):
         return int(round(self.window[0] + p[0])), int(round(self.window[1] + p[1]))
 
@@ -147,7 +158,7 @@ class Editor:
     def press(self, p, button=1):
         """Moves there and presses; returns once the editor saw the press there."""
         x, y = self.move(p)
-        mark = len(self.lines())
+        mark = self._act()
         xdo("mousedown", button)
         self.wait_line(rf"^pointer down {IMGUI_BUTTON[button]} ",
                        f"press of button {button}", since=mark)
@@ -155,9 +166,10 @@ class Editor:
 
     def drag_to(self, p):
         """Moves the held mouse and waits until the editor saw the cursor there."""
+        mark = len(self.lines())
         x, y = self.move(p)
         px, py = x - self.window[0], y - self.window[1]
-        self.wait_line(rf"^pointer at {px} {py}$", f"the cursor at {px} {py}")
+        self.wait_line(rf"^pointer at {px} {py}$", f"the cursor at {px} {py}", since=mark)
 
     def release(self, button=1):
         mark = len(self.lines())
@@ -170,15 +182,18 @@ class Editor:
         self.release(button)
 
     def key(self, *keys):
+        self._act()
         xdo("key", *keys)
 
     def hold(self, key):
+        self._act()
         xdo("keydown", key)
 
     def let_go(self, key):
         xdo("keyup", key)
 
     def type_text(self, text):
+        self._act()
         xdo("type", "--delay", 30, text)
 
     def quit(self):
