@@ -59,6 +59,8 @@ void open_context_menu() {
 bool draw_context_menu(const ActionRegistry& actions, ContextTarget target,
                        const MenuItemProbe& probe) {
   if (!ImGui::BeginPopup(kContextPopup)) return false;
+  // Esc closes it (ImGui leaves that to keyboard navigation, which the editor does not use).
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) ImGui::CloseCurrentPopup();
   const auto offered = actions.for_context(target);
   if (offered.empty()) ImGui::TextDisabled("Nothing to do here");
   std::string group;

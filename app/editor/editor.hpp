@@ -78,9 +78,10 @@ class Editor {
     PickResult under;    // what lies under the cursor this frame
     PickResult pressed;  // what lay under it at the last press (a click acts on it)
     int pressed_panel = -1;
-    std::optional<Vec3> pressed_point;  // the world point under the last press, if any
-    bool tool_has_it = false;           // the active tool took the left press
-    bool context_press = false;         // a right press that may end as a click: the context menu
+    std::optional<Vec3> pressed_point;      // the world point under the last press, if any
+    std::optional<Vec3> pressed_placement;  // where a new vertex would go at the last press
+    bool tool_has_it = false;               // the active tool took the left press
+    bool context_press = false;  // a right press that may end as a click: the context menu
     std::optional<ProbeHit> probe;
   };
 

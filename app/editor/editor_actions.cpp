@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "app/editor/editor.hpp"
+#include "app/editor/logic/add_vertex_tool.hpp"
 #include "app/editor/logic/authoring_actions.hpp"
 #include "app/editor/logic/make_face_tool.hpp"
 #include "app/editor/logic/selection_actions.hpp"
@@ -114,6 +115,20 @@ void Editor::register_actions() {
     if (context_ == ContextTarget::Edge && mouse_.pressed.edge == e) return mouse_.pressed.edge_t;
     return std::nullopt;
   };
+  Action vertex_here = make_action(
+      "network.add_vertex_here", "Network", "Add Vertex Here", {},
+      "from the right-click menu: a vertex where it was opened, on the surface there or else on "
+      "the work plane (the Add Vertex tool, V, adds one per click)",
+      [this] {
+        ToolContext ctx = tool_context();
+        AddVertexTool().add_at(ctx, *mouse_.pressed_placement);
+      });
+  vertex_here.context = context_bit(ContextTarget::Empty) | context_bit(ContextTarget::Face);
+  vertex_here.enabled = [this] {
+    return (context_ == ContextTarget::Empty || context_ == ContextTarget::Face) &&
+           mouse_.pressed_placement.has_value();
+  };
+  r.add(std::move(vertex_here));
   add_authoring_actions(r, session_.doc(), selection_, hooks);
   Action rename = make_action("edit.rename", "Edit", "Rename...", {"F2"},
                               "name the selected face or edge", [this] { start_rename(); });

@@ -219,6 +219,7 @@ void Editor::handle_mouse() {
   mouse_.pressed = mouse_.under;
   mouse_.pressed_panel = mouse_.panel;
   mouse_.pressed_point.reset();
+  mouse_.pressed_placement = placement(ctx, pointer_event(rect, &mouse_.pressed));
   if (mouse_.under.point >= 0)
     mouse_.pressed_point = scene.points->positions[mouse_.under.point];
   else if (mouse_.under.surface)

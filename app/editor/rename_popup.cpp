@@ -34,6 +34,7 @@ std::optional<std::pair<SelectionItem, std::string>> RenamePopup::draw(float s) 
     ImGui::CloseCurrentPopup();
   }
   ImGui::TextDisabled("Enter: apply   Esc: leave it");
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) ImGui::CloseCurrentPopup();
   ImGui::EndPopup();
   return done;
 }

@@ -23,10 +23,12 @@ std::string list(const std::vector<int>& xs) {
 void vertex_options(AddVertexTool& tool, ToolContext& ctx) {
   // Starts at the work plane's origin: where a typed vertex most often goes.
   static double xyz[3] = {0, 0, 0};
-  ImGui::SetNextItemWidth(-80 * float(ctx.ui_scale));
+  const char* add = "Add vertex";
+  ImGui::SetNextItemWidth(-(ImGui::CalcTextSize(add).x + 2 * ImGui::GetStyle().FramePadding.x +
+                            ImGui::GetStyle().ItemSpacing.x));
   ImGui::InputScalarN("##new_vertex", ImGuiDataType_Double, xyz, 3, nullptr, nullptr, "%.6g");
   ImGui::SameLine();
-  if (ImGui::Button("Add vertex")) tool.add_at(ctx, Vec3(xyz[0], xyz[1], xyz[2]));
+  if (ImGui::Button(add)) tool.add_at(ctx, Vec3(xyz[0], xyz[1], xyz[2]));
 }
 
 }  // namespace

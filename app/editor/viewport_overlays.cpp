@@ -184,8 +184,12 @@ void draw_tool_overlays(const ViewRect& rect, const Camera& camera, const ToolPr
     if (rim.size() == kRim && c) {
       const ImU32 fill = h.fixed ? rgba(kAccent[0], kAccent[1], kAccent[2], 0.22f)
                                  : rgba(0.45f, 0.62f, 0.9f, 0.22f);
-      for (int k = 0; k < kRim; ++k)  // a fan: the rim is convex on screen
-        dl->AddTriangleFilled(im(*c), rim[k], rim[(k + 1) % kRim], fill);
+      // An ellipse on screen: convex; ImGui's anti-aliased fill wants it clockwise (y down).
+      double area = 0;
+      for (int k = 0; k < kRim; ++k)
+        area += double(rim[k].x) * rim[(k + 1) % kRim].y - double(rim[(k + 1) % kRim].x) * rim[k].y;
+      if (area < 0) std::reverse(rim.begin(), rim.end());
+      dl->AddConvexPolyFilled(rim.data(), kRim, fill);
       dl->AddPolyline(rim.data(), kRim, h.fixed ? accent : rgba(0.45f, 0.62f, 0.9f, 0.95f),
                       ImDrawFlags_Closed, 1.8f * s);
     }
@@ -210,10 +214,14 @@ void draw_tool_overlays(const ViewRect& rect, const Camera& camera, const ToolPr
     const auto qa = screen(a), qb = screen(b);
     if (qa && qb) dashed_line(dl, *qa, *qb, ink, 1.8f * s, 6.0f * s);
   }
-  for (const Vec3& p : preview.picked)
-    if (const auto q = screen(p)) {
-      dl->AddCircleFilled(im(*q), 6.0f * s, accent);
-      dl->AddCircle(im(*q), 8.0f * s, ink, 0, 1.5f * s);
+  // Picked points: white rings (the selection is filled), numbered in the order picked.
+  for (std::size_t i = 0; i < preview.picked.size(); ++i)
+    if (const auto q = screen(preview.picked[i])) {
+      dl->AddCircleFilled(im(*q), 7.5f * s, rgba(1, 1, 1));
+      dl->AddCircle(im(*q), 7.5f * s, accent, 0, 3.0f * s);
+      if (preview.picked.size() > 1)
+        dl->AddText(ImVec2(float(q->x) + 9 * s, float(q->y) - 19 * s), ink,
+                    std::to_string(i + 1).c_str());
     }
   if (preview.target)
     if (const auto q = screen(*preview.target)) {

@@ -104,8 +104,8 @@ TEST(EditorActions, HelpListsEveryKeyThenTheMouseThenTheMenuOnlyCommands) {
   EXPECT_EQ(rows[1].keys, "Arrows");
   EXPECT_EQ(rows[1].what, "edit.nudge");
   EXPECT_EQ(rows[2].keys, "Wheel");
-  EXPECT_EQ(rows[3].keys, "File > Mesh > file.export");
-  EXPECT_EQ(rows[3].what, "file.export");
+  EXPECT_EQ(rows[3].keys, "File menu");
+  EXPECT_EQ(rows[3].what, "Mesh > file.export");
 }
 
 }  // namespace

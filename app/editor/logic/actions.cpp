@@ -193,12 +193,16 @@ std::vector<HelpRow> help_rows(const ActionRegistry& actions, const std::vector<
   for (const Action& a : actions.all()) {
     const std::string what = a.help.empty() ? a.label : a.help;
     if (a.keys.empty() && a.keys_text.empty()) {
-      // Reached from a menu only: its place there instead of a key ("Network > Fill Holes").
+      // Reached from a menu only: the menu instead of a key, the place in it before the help
+      // ("View menu", "Work Plane > XY Plane: ...").
       if (a.menu.empty()) continue;
-      std::string place = a.menu;
+      const std::size_t slash = a.menu.find('/');
+      std::string place =
+          slash == std::string::npos ? std::string() : a.menu.substr(slash + 1) + "/";
       for (std::size_t i = 0; (i = place.find('/', i)) != std::string::npos; i += 3)
         place.replace(i, 1, " > ");
-      menu_only.push_back({place + " > " + a.label, what});
+      menu_only.push_back({a.menu.substr(0, slash) + " menu",
+                           place + a.label + (a.help.empty() ? "" : ": " + a.help)});
       continue;
     }
     std::string keys = a.keys_text;

@@ -157,8 +157,8 @@ class ActionRegistry {
 };
 
 // The F1 table: one row per action with keys (its keys text and its help, or label), then the
-// mouse rows given, then the actions reached from a menu only (their menu place, "Network >
-// Tangent Plane > Fixed", and help), in that order: every command is listed.
+// mouse rows given, then the actions reached from a menu only ("Network menu", "Tangent Plane >
+// Fixed: " and their help), in that order: every command is listed.
 struct HelpRow {
   std::string keys, what;
 };
