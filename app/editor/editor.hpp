@@ -83,6 +83,7 @@ class Editor {
     bool tool_has_it = false;               // the active tool took the left press
     bool context_press = false;  // a right press that may end as a click: the context menu
     std::optional<ProbeHit> probe;
+    uint64_t structure = 0;  // the network structure `under` and `pressed` were picked in
   };
 
   // editor.cpp

@@ -12,12 +12,18 @@
 namespace pl {
 
 void Editor::follow_structure() {
-  if (selection_.follow(session_.doc().scene()) != Selection::Followed::Cleared) return;
-  // Indices may name other objects now: the tool's picks and the pick under the mouse go too.
-  ToolContext ctx = tool_context();
-  tools_.active().cancel(ctx);
-  mouse_.under = {};
-  mouse_.pressed = {};
+  const Selection::Followed f = selection_.follow(session_.doc().scene());
+  // What was picked under the mouse came from the network as it was.
+  if (selection_.structure_serial() != mouse_.structure) {
+    mouse_.structure = selection_.structure_serial();
+    mouse_.under = {};
+    mouse_.pressed = {};
+  }
+  // Indices may name other objects now: the tool's picks go too.
+  if (f == Selection::Followed::Cleared) {
+    ToolContext ctx = tool_context();
+    tools_.active().cancel(ctx);
+  }
 }
 
 void Editor::draw_tool_feedback() {

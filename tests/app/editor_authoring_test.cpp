@@ -12,6 +12,7 @@
 #include "app/editor/logic/live_surfaces.hpp"
 #include "app/editor/logic/make_face_tool.hpp"
 #include "app/editor/logic/plane_handles.hpp"
+#include "app/editor/logic/select_tool.hpp"
 #include "app/editor/logic/split_edge_tool.hpp"
 #include "core/io/scene_io.hpp"
 
@@ -234,6 +235,33 @@ TEST_F(AuthoringTools, MakeFaceFromEdgesEnterFinishesRefusalsKeepThePicks) {
   EXPECT_FALSE(tool.capturing());
 }
 
+TEST_F(AuthoringTools, ANormalSeenEndOnLeavesItsVertexToThePointUnderTheCursor) {
+  AddVertexTool vertices;
+  add_five(vertices);
+  MakeFaceTool face;
+  for (int v : {0, 1, 2, 3, 0}) face.click(ctx, at(Vec2(0), vertex(v)));
+  ASSERT_EQ(net().faces.size(), 1u);
+  selection.set({SelectionItem::of_point(PointRef::vertex(2))});
+  // Seen from the top, the flat face's normal points at the viewer: the knob sits on the vertex.
+  const std::vector<PlaneHandle> h = plane_handles(doc.scene(), selection, camera, kRect, 1);
+  ASSERT_EQ(h.size(), 1u);
+  EXPECT_NEAR(glm::dot(h[0].normal, Vec3(0, 0, 1)), 1, 1e-15);
+  const Vec2 v2 = pixel_of(net().vertices[2]);
+  EXPECT_LT(glm::length(pixel_of(h[0].knob) - v2), 1e-6);
+  SelectTool tool;
+  // The press on the vertex itself (the picker found it there) drags the vertex.
+  ASSERT_TRUE(tool.press(ctx, at(v2, vertex(2))));
+  EXPECT_EQ(doc.drag_points(), std::vector<PointRef>{PointRef::vertex(2)});
+  tool.release(ctx, at(v2, vertex(2)));
+  // Off the point but on the knob: the knob turns the plane.
+  ASSERT_TRUE(tool.press(ctx, at(v2 + Vec2(4, 4))));
+  EXPECT_FALSE(doc.dragging());
+  tool.drag(ctx, at(v2 + Vec2(40, 4)));
+  tool.release(ctx, at(v2 + Vec2(40, 4)));
+  ASSERT_TRUE(net().normals.size() == 5 && net().normals[2]);
+  EXPECT_GT(net().normals[2]->x, 0.3);  // tilted towards the drag (+x on screen is +x here)
+}
+
 struct AuthoringOnDefault : AuthoringTools {
   AuthoringOnDefault() {
     doc = Document(load_input(std::filesystem::path(PATCHLAB_SOURCE_DIR) / "assets/default.json"));
@@ -268,9 +296,12 @@ TEST_F(AuthoringOnDefault, SelectionFollowsMovesAppendsAndClearsOnRenumbering) {
   selection.set({SelectionItem::face(1), SelectionItem::of_point(PointRef::vertex(6))});
   doc.execute(std::make_unique<MovePointsCommand>(std::vector{PointRef::vertex(6)},
                                                   std::vector{Vec3(0.1, 0.2, 0.3)}));
+  const uint64_t structure = selection.structure_serial();
   EXPECT_EQ(selection.follow(doc.scene()), Selection::Followed::Kept);
+  EXPECT_EQ(selection.structure_serial(), structure);        // a move changes no structure
   doc.execute(std::make_unique<AddVertexCommand>(Vec3(5)));  // appended: indices stay
   EXPECT_EQ(selection.follow(doc.scene()), Selection::Followed::Kept);
+  EXPECT_GT(selection.structure_serial(), structure);  // but what lay under the cursor may not
   selection.add(SelectionItem::of_point(PointRef::vertex(7)));
   doc.undo();  // the new vertex goes from the end: dropped, the rest stays
   EXPECT_EQ(selection.follow(doc.scene()), Selection::Followed::Pruned);

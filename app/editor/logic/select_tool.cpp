@@ -13,14 +13,15 @@ bool SelectTool::press_knob(ToolContext& ctx, const PointerEvent& e) {
       plane_handles(ctx.doc.scene(), ctx.selection, ctx.camera, e.rect, ctx.ui_scale);
   const int k = pick_knob(handles, ctx.camera, e.rect, e.pixel, kKnobPickRadiusPx * ctx.ui_scale);
   if (k < 0) return false;
-  // A point nearer to the cursor than the knob wins (a normal seen end-on puts its knob on its
-  // vertex: orbit a little to reach it).
+  // A point at least as near to the cursor as the knob wins (a normal seen end-on puts its knob
+  // on its vertex: the press drags the vertex; orbit a little to reach the knob).
   if (e.under && e.under->item && e.under->item->kind == SelectionItem::Kind::Point &&
       point_exists(ctx.doc.scene(), e.under->item->point)) {
     const auto point = project_to_window(ctx.camera, e.rect,
                                          point_position(ctx.doc.scene(), e.under->item->point));
     const auto knob = project_to_window(ctx.camera, e.rect, handles[k].knob);
-    if (point && knob && glm::length(*point - e.pixel) < glm::length(*knob - e.pixel)) return false;
+    if (point && knob && glm::length(*point - e.pixel) <= glm::length(*knob - e.pixel))
+      return false;
   }
   knob_ = handles[k];
   knob_normal_.reset();

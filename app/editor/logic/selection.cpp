@@ -146,6 +146,7 @@ Selection::Followed Selection::follow(const Scene& scene) {
     return prune(scene) ? Followed::Pruned : Followed::Kept;
   }
   Structure now = structure_of(scene);
+  ++structure_serial_;
   const bool compatible = one_extends_the_other(was.vertices, now.vertices) &&
                           one_extends_the_other(was.edges, now.edges) &&
                           one_extends_the_other(was.faces, now.faces);
@@ -160,6 +161,7 @@ Selection::Followed Selection::follow(const Scene& scene) {
 
 void Selection::adopt(const Scene& scene) {
   structure_ = structure_of(scene);
+  ++structure_serial_;
   prune(scene);
 }
 

@@ -76,11 +76,14 @@ class Selection {
 
   // Changes whenever the selection does (panels and overlays cache on it).
   uint64_t serial() const { return serial_; }
+  // Changes whenever follow() or adopt() met a network of another structure (what was picked
+  // under the cursor before may name another object now).
+  uint64_t structure_serial() const { return structure_serial_; }
 
  private:
   void changed() { ++serial_; }
   std::vector<SelectionItem> items_;
-  uint64_t serial_ = 0;
+  uint64_t serial_ = 0, structure_serial_ = 0;
   // The network's structure the indices refer to: vertex positions only when their count
   // changes (to tell an appended vertex from a renumbering), edge ends and face loops.
   struct Structure {
