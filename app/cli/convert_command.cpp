@@ -7,7 +7,7 @@
 #include "core/io/data_error.hpp"
 #include "core/io/gbp_io.hpp"
 #include "core/io/scene_io.hpp"
-#include "core/patch/gb_patch.hpp"
+#include "core/patch/gb/gb_patch.hpp"
 
 namespace pl {
 

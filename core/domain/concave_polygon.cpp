@@ -12,10 +12,6 @@ namespace pl {
 
 namespace {
 
-double cross(Vec2 a, Vec2 b) {
-  return a.x * b.y - a.y * b.x;
-}
-
 // Closed segments ab and cd share a point.
 bool segments_touch(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);

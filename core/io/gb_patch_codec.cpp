@@ -2,7 +2,7 @@
 // .gbp order (central point first), see GBPatch.
 #include "core/io/gb_patch_codec.hpp"
 
-#include "core/patch/gb_patch.hpp"
+#include "core/patch/gb/gb_patch.hpp"
 
 namespace pl {
 

@@ -3,7 +3,7 @@
 // points, boundary row first; consecutive ribbons repeat their shared corner point.
 #include "core/io/gb_ribbon_patch_codec.hpp"
 
-#include "core/patch/gb_ribbon_patch.hpp"
+#include "core/patch/gb/gb_ribbon_patch.hpp"
 
 namespace pl {
 

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "core/patch/gb_patch.hpp"
+#include "core/patch/gb/gb_patch.hpp"
 
 namespace pl {
 

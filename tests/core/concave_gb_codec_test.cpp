@@ -3,7 +3,7 @@
 
 #include "core/io/data_error.hpp"
 #include "core/io/scene_io.hpp"
-#include "core/patch/gb_ribbon_patch.hpp"
+#include "core/patch/gb/gb_ribbon_patch.hpp"
 
 namespace pl {
 namespace {

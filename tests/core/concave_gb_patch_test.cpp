@@ -8,7 +8,7 @@
 
 #include "core/eval/patch_evaluator.hpp"
 #include "core/math/bernstein.hpp"
-#include "core/patch/gb_ribbon_patch.hpp"
+#include "core/patch/gb/gb_ribbon_patch.hpp"
 
 namespace pl {
 namespace {

@@ -1,8 +1,6 @@
 // Edgewise elevation and layer addition of one ribbon of a GB patch with independent ribbons
-// (core/patch/gb_ribbon_elevation.hpp): the boundary curves, the surface along every side and its
+// (core/patch/gb/ribbon_elevation.hpp): the boundary curves, the surface along every side and its
 // first derivatives there are kept (against the original patch); the interior change is measured.
-#include "core/patch/gb_ribbon_elevation.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +8,7 @@
 #include <random>
 
 #include "core/io/gb_ribbon_patch_codec.hpp"
+#include "core/patch/gb/ribbon_elevation.hpp"
 #include "gb_test_util.hpp"
 #include "test_util.hpp"
 

@@ -16,7 +16,7 @@
 #include "core/math/bernstein.hpp"
 #include "core/math/jet.hpp"
 #include "core/param/mean_value.hpp"
-#include "core/patch/gb_ribbon_patch.hpp"
+#include "core/patch/gb/gb_ribbon_patch.hpp"
 
 namespace pl {
 namespace {
@@ -207,10 +207,6 @@ SurfaceJet quad_sum(const GBRibbonPatch& g, Vec2 x) {
   return r;
 }
 
-double cross(Vec2 a, Vec2 b) {
-  return a.x * b.y - a.y * b.x;
-}
-
 struct Case {
   const char* name;
   std::vector<Vec2> poly;
@@ -266,7 +262,7 @@ TEST(GBRibbonEvaluate, MatchesBasisSumInsideOnSidesAndAtCorners) {
       interior.value, side.value, corner.value);
   EXPECT_LE(interior.value, 1e-13);
   EXPECT_LE(side.value, 1e-13);
-  EXPECT_EQ(corner.value, 0);  // the same corner_basis() path
+  EXPECT_EQ(corner.value, 0);  // the same gb_ribbon_corner_basis() path
   EXPECT_EQ(interior.reference_not_finite + side.reference_not_finite + corner.reference_not_finite,
             0);
 }

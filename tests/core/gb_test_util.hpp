@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/io/gbp_io.hpp"
-#include "core/patch/gb_patch.hpp"
+#include "core/patch/gb/gb_patch.hpp"
 
 namespace pl::test {
 
@@ -71,7 +71,7 @@ inline GBPatch random_gb(int n, int d, unsigned seed) {
 }
 
 // The reference data is part of the repository: a test that needs it fails without it.
-#define PATCHLAB_REQUIRE_GB_REFERENCE()                                     \
+#define PATCHLAB_REQUIRE_GB_REFERENCE()                                      \
   ASSERT_TRUE(std::filesystem::is_directory(::pl::test::gb_reference_dir())) \
       << "GB reference folder " << ::pl::test::gb_reference_dir() << " is missing"
 

@@ -1,5 +1,5 @@
 // Degree elevation of one ribbon of a GB patch with independent ribbons
-// (core/patch/gb_ribbon_patch.hpp; Salvi & Várady SMI 2018: "degree elevation independently in
+// (core/patch/gb/gb_ribbon_patch.hpp; Salvi & Várady SMI 2018: "degree elevation independently in
 // the two parametric directions; adding a layer increases the degree by 2").
 //
 // Neither operation leaves the surface unchanged: the blend of C^i_{j,k} has its weight mu
@@ -12,7 +12,7 @@
 // tests/core/gb_ribbon_elevation_test.cpp).
 #pragma once
 
-#include "core/patch/gb_ribbon_patch.hpp"
+#include "core/patch/gb/gb_ribbon_patch.hpp"
 
 namespace pl {
 

@@ -1,11 +1,11 @@
-#include "core/patch/gb_elevation.hpp"
+#include "core/patch/gb/elevation.hpp"
 
 #include <cmath>
 #include <memory>
 #include <stdexcept>
 #include <string>
 
-#include "core/patch/gb_default_net.hpp"
+#include "core/patch/gb/default_net.hpp"
 
 namespace pl {
 

@@ -16,37 +16,40 @@
 // (the network vertex). Storage order: for each side i, boundary row j = 0..d_i-1, then rows
 // k = 1..l_i-1 with j = 0..d_i.
 //
-// Evaluation: B^d_j(s) B^m_k(h) is computed as lambda_i^j lambda_{i-1}^{d-j} D^{m-k-d} h^k
-// (D = lambda_{i-1} + lambda_i) so that the 0/0 of s_i on the sides away from ribbon i becomes
-// the exact one-sided limit; at the domain vertices (where the weights are 0/0) value and first
-// derivatives come from the two boundary curves, second derivatives from the two curves along
-// the sides and the mean of the two ribbons' twists for the mixed term.
+// The parts: the domain (ConcavePolygonDomain), the parameterization (mean value coordinates,
+// core/param/mean_value.hpp), the ribbons in homogeneous Bernstein form (ribbon_powers.hpp: the
+// 0/0 of s_i on the sides away from ribbon i becomes the exact one-sided limit), the blend
+// (blend.hpp: ribbon_mu and the squared corner weights), and at the domain vertices, where the
+// weights are 0/0, the corner limits (vertex_limits.hpp).
 #pragma once
 
 #include <vector>
 
 #include "core/domain/concave_polygon.hpp"
+#include "core/param/mean_value.hpp"
+#include "core/patch/gb/ribbon_powers.hpp"
 #include "core/patch/patch.hpp"
 
 namespace pl {
 
 class GBRibbonPatch final : public Patch {
  public:
+  static constexpr const char* kType = "gb-ribbons";
   // The largest ribbon degree and layer count the gb-ribbons format accepts (the codec's limits;
   // the elevation functions refuse to go beyond them).
-  static constexpr int kMaxDegree = 30, kMaxLayers = 15;
-  // The most sides the gb-ribbons format accepts; evaluate() keeps its per-sample arrays on the
-  // stack up to this size.
-  static constexpr int kMaxSides = 64;
+  static constexpr int kMaxDegree = kMaxRibbonDegree, kMaxLayers = kMaxRibbonLayers;
+  // The most sides (the parameterization's limit; evaluate() keeps its arrays on the stack).
+  static constexpr int kMaxSides = MeanValueParameters::kMaxSides;
 
-  // ribbons[i][k][j] = C^i_{j,k}. Throws std::invalid_argument for sizes that do not match the
-  // domain, l < 2, degree < 1, ribbons that do not share their corner points, straight domain
-  // corners, or a domain over which the mean value coordinates make the blend singular.
+  // ribbons[i][k][j] = C^i_{j,k}. Throws std::invalid_argument for more than kMaxSides sides,
+  // sizes that do not match the domain, l < 2, degree < 1, ribbons that do not share their
+  // corner points, straight domain corners, or a domain over which the mean value coordinates
+  // make the blend singular.
   GBRibbonPatch(ConcavePolygonDomain domain,
                 const std::vector<std::vector<std::vector<Vec3>>>& ribbons);
 
   std::unique_ptr<Patch> clone() const override { return std::make_unique<GBRibbonPatch>(*this); }
-  std::string type() const override { return "gb-ribbons"; }
+  std::string type() const override { return kType; }
   const Domain& domain() const override { return domain_; }
   const ConcavePolygonDomain& polygon() const { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
@@ -65,15 +68,13 @@ class GBRibbonPatch final : public Patch {
   std::vector<std::vector<std::vector<Vec3>>> ribbons() const;
 
  private:
-  void corner_basis(int vertex, std::span<Jet> out) const;
-  // Smallest denominator found over interior samples; throws if the blend is singular.
+  // Throws if the blend is singular somewhere inside the domain.
   void check_parameterisation() const;
 
   ConcavePolygonDomain domain_;
+  MeanValueParameters params_;
   std::vector<int> degree_, layers_;
   std::vector<std::size_t> offset_;
-  // At most kMaxSides sides: evaluate()'s stack arrays hold them.
-  bool fast_evaluate_ = false;
 };
 
 }  // namespace pl

@@ -1,4 +1,4 @@
-#include "core/patch/gb_ribbon_elevation.hpp"
+#include "core/patch/gb/ribbon_elevation.hpp"
 
 #include <stdexcept>
 #include <string>

@@ -43,7 +43,7 @@
 #include <span>
 #include <vector>
 
-#include "core/patch/gb_patch.hpp"
+#include "core/patch/gb/gb_patch.hpp"
 
 namespace pl {
 

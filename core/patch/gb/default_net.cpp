@@ -1,4 +1,4 @@
-#include "core/patch/gb_default_net.hpp"
+#include "core/patch/gb/default_net.hpp"
 
 #include <memory>
 #include <stdexcept>

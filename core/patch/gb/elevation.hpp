@@ -1,4 +1,4 @@
-// Degree elevation d -> d+1 of a convex GB patch (core/patch/gb_patch.hpp).
+// Degree elevation d -> d+1 of a convex GB patch (core/patch/gb/gb_patch.hpp).
 //
 // Exact elevation does not exist for n != 4: the GB surface is linear in its control points, and
 // the least-squares fit of the degree-(d+1) basis to each degree-d basis function over ~1000
@@ -22,7 +22,7 @@
 // centre point S(0, 0) (the middle-point interpolation of CGF 2016) for every n and d (measured
 // 1.2e-15 relative, n = 3..16, d = 2..19): C_0's weight at the centre is >= 0.11 for n != 4 and
 // >= 0.03 for n = 4 with even d+1. For n = 4 with odd d+1 C_0 has no weight at all; it takes the
-// default-net position (gb_default_net.hpp, rule 4) and the centre is kept by the exact
+// default-net position (default_net.hpp, rule 4) and the centre is kept by the exact
 // tensor-product elevation. The interior of random nets moves by 0.1 .. 3.3 % of the net's
 // diagonal (n = 3, 5..8, d = 2..7). Against two other rules for C_0 (keeping the old C_0, the
 // default-net rule 4), the centre rule gave the smallest largest move in 28 of those 30 cases
@@ -36,7 +36,7 @@
 // weights, which a cubic row 1 cannot reproduce); there only the boundary curves are kept.
 #pragma once
 
-#include "core/patch/gb_patch.hpp"
+#include "core/patch/gb/gb_patch.hpp"
 
 namespace pl {
 
