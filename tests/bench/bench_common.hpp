@@ -35,5 +35,6 @@ inline double median_ms(int repeats, const std::function<void()>& f) {
 // One function per benchmark file; patchlab_bench.cpp calls them in order.
 void bench_bezier(const Options& options);
 void bench_gb(const Options& options);
+void bench_gb_face(const Options& options);
 
 }  // namespace pl::bench

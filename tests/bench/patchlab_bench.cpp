@@ -14,5 +14,6 @@ int main(int argc, char** argv) {
               options.quick ? " (quick mode: figures are not meaningful)" : "");
   pl::bench::bench_bezier(options);
   pl::bench::bench_gb(options);
+  pl::bench::bench_gb_face(options);
   return 0;
 }
