@@ -8,7 +8,7 @@
 #include "app/cli/arguments.hpp"
 #include "app/cli/cli.hpp"
 #include "app/cli/commands.hpp"
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/io/gbp_io.hpp"
 #include "core/patch/gb/default_net.hpp"
 #include "core/patch/gb/elevation.hpp"

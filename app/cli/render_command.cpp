@@ -10,7 +10,7 @@
 #include "app/cli/draw_scene_builder.hpp"
 #include "app/cli/load_input.hpp"
 #include "core/io/atomic_file.hpp"
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "render/egl_context.hpp"
 #include "render/frame.hpp"
 

@@ -3,7 +3,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/io/scene_io.hpp"
 
 namespace pl {

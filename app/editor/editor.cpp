@@ -9,7 +9,7 @@
 #include <iostream>
 
 #include "app/editor/logic/editor_paths.hpp"
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 
 namespace pl {
 

@@ -9,7 +9,7 @@
 #include <random>
 #include <sstream>
 
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 
 namespace pl {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/math/vec.hpp"
 
 namespace pl {

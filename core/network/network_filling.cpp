@@ -2,7 +2,7 @@
 
 #include <numeric>
 
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/network/face_ribbons.hpp"
 #include "core/network/gb_face.hpp"
 #include "core/network/gregory_face.hpp"

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/network/tangent_planes.hpp"
 #include "core/patch/patch.hpp"
 #include "core/scene/network.hpp"
 
@@ -18,11 +19,6 @@ struct FacePatch {
   // patch_side[i]: the patch domain side that carries face side i, traversed in the same
   // direction (from loop[i] to loop[i+1]) with side parameter = edge curve parameter.
   std::vector<int> patch_side;
-};
-
-struct ProjectedVertex {
-  int vertex = -1;
-  double max_angle_deg = 0;  // largest angle by which an edge end tangent left the plane
 };
 
 struct NetworkFilling {

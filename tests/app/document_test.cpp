@@ -4,7 +4,7 @@
 
 #include "cli_test_util.hpp"
 #include "core/eval/scene_evaluation.hpp"
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/io/scene_io.hpp"
 
 namespace pl::test {

@@ -1,11 +1,11 @@
-#include "core/network/network_editor.hpp"
+#include "core/eval/network_editor.hpp"
 
 #include <gtest/gtest.h>
 
 #include <random>
 #include <set>
 
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "network_test_util.hpp"
 
 namespace pl {

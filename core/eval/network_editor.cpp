@@ -1,10 +1,10 @@
-#include "core/network/network_editor.hpp"
+#include "core/eval/network_editor.hpp"
 
 #include <algorithm>
 #include <set>
 #include <utility>
 
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/network/face_ribbons.hpp"
 
 namespace pl {
