@@ -7,8 +7,8 @@
 #include <string_view>
 #include <vector>
 
-#include "core/io/atomic_file.hpp"
 #include "core/base/data_error.hpp"
+#include "core/io/atomic_file.hpp"
 
 namespace pl {
 

@@ -18,6 +18,7 @@ namespace pl {
 
 class CoonsNetworkPatch final : public Patch {
  public:
+  static constexpr const char* kType = "coons-network";  // the scene-format type name
   enum class Lengths { Network, Equal };
 
   // Throws std::invalid_argument for fewer than 2 x 2 nodes, wrong counts, or parameters that
@@ -29,7 +30,7 @@ class CoonsNetworkPatch final : public Patch {
   std::unique_ptr<Patch> clone() const override {
     return std::make_unique<CoonsNetworkPatch>(*this);
   }
-  std::string type() const override { return "coons-network"; }
+  std::string type() const override { return kType; }
   const Domain& domain() const override { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
   void basis(Vec2 x, std::span<Jet> out) const override;

@@ -34,6 +34,7 @@ namespace pl {
 
 class GregoryQuadPatch final : public Patch {
  public:
+  static constexpr const char* kType = "gregory-quad";  // the scene-format type name
   static constexpr std::size_t kPointCount = 20;
   // Point j in 0..3 of side s (j = 3 is the next side's start corner).
   static constexpr std::size_t boundary_index(int side, int j) {
@@ -50,7 +51,7 @@ class GregoryQuadPatch final : public Patch {
   std::unique_ptr<Patch> clone() const override {
     return std::make_unique<GregoryQuadPatch>(*this);
   }
-  std::string type() const override { return "gregory-quad"; }
+  std::string type() const override { return kType; }
   const Domain& domain() const override { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
   void basis(Vec2 x, std::span<Jet> out) const override;

@@ -37,6 +37,7 @@ namespace pl {
 
 class GregoryTriPatch final : public Patch {
  public:
+  static constexpr const char* kType = "gregory-tri";  // the scene-format type name
   static constexpr std::size_t kPointCount = 18;
   // Point j in 0..4 of side s (j = 4 is the next side's start corner).
   static constexpr std::size_t boundary_index(int side, int j) {
@@ -51,7 +52,7 @@ class GregoryTriPatch final : public Patch {
   explicit GregoryTriPatch(std::vector<Vec3> points);
 
   std::unique_ptr<Patch> clone() const override { return std::make_unique<GregoryTriPatch>(*this); }
-  std::string type() const override { return "gregory-tri"; }
+  std::string type() const override { return kType; }
   const Domain& domain() const override { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
   void basis(Vec2 x, std::span<Jet> out) const override;

@@ -11,6 +11,7 @@ namespace pl {
 
 class NurbsPatch final : public Patch {
  public:
+  static constexpr const char* kType = "nurbs";  // the scene-format type name
   // Throws std::invalid_argument for invalid knots, counts, or non-positive weights.
   NurbsPatch(int p, int q, std::vector<double> knots_u, std::vector<double> knots_v, std::size_t nu,
              std::size_t nv, std::vector<Vec3> points, std::vector<double> weights);
@@ -22,7 +23,7 @@ class NurbsPatch final : public Patch {
   static NurbsPatch cylinder(Vec3 base_center, double radius, double height);
 
   std::unique_ptr<Patch> clone() const override { return std::make_unique<NurbsPatch>(*this); }
-  std::string type() const override { return "nurbs"; }
+  std::string type() const override { return kType; }
   const Domain& domain() const override { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
   void basis(Vec2 x, std::span<Jet> out) const override;

@@ -30,12 +30,13 @@ struct JunctionFunctions {  // Bernstein coefficients on [0,1]
 
 class PairJoinPatch final : public Patch {
  public:
+  static constexpr const char* kType = "pair-join";  // the scene-format type name
   // order 1 (G1) or 2 (G2). Throws std::invalid_argument for inconsistent data.
   PairJoinPatch(int order, int aux_degree_u, int aux_degree_v, std::vector<Vec3> aux_points,
                 JunctionFunctions a, JunctionFunctions b);
 
   std::unique_ptr<Patch> clone() const override { return std::make_unique<PairJoinPatch>(*this); }
-  std::string type() const override { return "pair-join"; }
+  std::string type() const override { return kType; }
   const Domain& domain() const override { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
   void set_control_point(std::size_t k, const Vec3& p) override;

@@ -38,10 +38,6 @@ std::size_t GBPatch::point_count(int n, int d) {
   return 1 + static_cast<std::size_t>(n) * (l * d - l * (l - 1));
 }
 
-std::string GBPatch::type() const {
-  return kType;
-}
-
 GBPatch::GBPatch(int sides, int degree, std::vector<Vec3> points)
     : Patch(std::move(points)),
       n_(checked_sides(sides, degree)),

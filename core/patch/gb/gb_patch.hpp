@@ -40,7 +40,7 @@ class GBPatch final : public Patch {
  public:
   static constexpr int kMaxSides = WachspressParameters::kMaxSides;
   static constexpr int kMaxDegree = 20;
-  static constexpr const char* kType = "gb";
+  static constexpr const char* kType = "gb";  // the scene-format type name
 
   // Throws std::invalid_argument for n outside 3..kMaxSides, d outside 1..kMaxDegree or a
   // wrong point count.
@@ -50,7 +50,7 @@ class GBPatch final : public Patch {
   static std::size_t point_count(int sides, int degree);
 
   std::unique_ptr<Patch> clone() const override { return std::make_unique<GBPatch>(*this); }
-  std::string type() const override;
+  std::string type() const override { return kType; }
   const Domain& domain() const override { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
   void set_control_point(std::size_t k, const Vec3& p) override;

@@ -34,7 +34,7 @@ namespace pl {
 
 class GBRibbonPatch final : public Patch {
  public:
-  static constexpr const char* kType = "gb-ribbons";
+  static constexpr const char* kType = "gb-ribbons";  // the scene-format type name
   // The largest ribbon degree and layer count the gb-ribbons format accepts (the codec's limits;
   // the elevation functions refuse to go beyond them).
   static constexpr int kMaxDegree = kMaxRibbonDegree, kMaxLayers = kMaxRibbonLayers;
