@@ -30,7 +30,7 @@ NetworkEditor::NetworkEditor(Network network, std::optional<FaceScheme> scheme, 
   for (std::size_t f = 0; f < network_.faces.size(); ++f) {
     const int fi = static_cast<int>(f);
     schemes_.push_back(resolve_scheme(network_.faces[f], scheme));
-    FacePatch fp = build_face_patch(network_, fi, schemes_[f],
+    FacePatch fp = build_face_patch(fi, schemes_[f],
                                     face_ribbons(network_, topology_, cross_, fi), source_);
     tessellations_.push_back(cache.get(fp.patch->domain(), density));
     evaluators_.push_back(std::make_unique<PatchEvaluator>(std::move(fp.patch), tessellations_[f]));
@@ -60,7 +60,7 @@ NetworkEditor::Update NetworkEditor::refresh(const std::vector<int>& vertices) {
     }
     for (int f : faces)
       patches.emplace_back(f,
-                           build_face_patch(network_, f, schemes_[f],
+                           build_face_patch(f, schemes_[f],
                                             face_ribbons(network_, topology_, cross_, f), source_));
   } catch (...) {
     for (auto& [v, p] : old_planes) planes_[v] = p;

@@ -15,8 +15,8 @@ std::string face_path(int f) {
 }
 }  // namespace
 
-FacePatch build_face_patch(const Network& network, int face, FaceScheme scheme,
-                           const FaceRibbons& ribbons, const std::string& source) {
+FacePatch build_face_patch(int face, FaceScheme scheme, const FaceRibbons& ribbons,
+                           const std::string& source) {
   FacePatch fp;
   fp.face = face;
   if (scheme == FaceScheme::Gregory) {
@@ -25,9 +25,8 @@ FacePatch build_face_patch(const Network& network, int face, FaceScheme scheme,
     std::iota(fp.patch_side.begin(), fp.patch_side.end(), 0);  // face side i = domain side i
     return fp;
   }
-  // GB faces (issue #4): independent-ribbon GB patch from the same ribbons, over the regular
-  // n-gon (convex faces) or a concave domain; face side i = domain side i.
-  (void)network;
+  // GB faces: the independent-ribbon GB patch from the same ribbons, over the regular n-gon
+  // (convex faces) or a concave domain (core/network/gb_face.hpp); face side i = domain side i.
   try {
     fp.patch = gb_face_patch(ribbons);
   } catch (const std::invalid_argument& e) {
@@ -51,8 +50,7 @@ NetworkFilling fill_network(const Network& network, const NetworkTopology& topol
     throw DataError(source, e.where(), e.message());  // the construction does not know the file
   }
   for (std::size_t f = 0; f < network.faces.size(); ++f)
-    out.faces.push_back(
-        build_face_patch(network, static_cast<int>(f), schemes[f], ribbons[f], source));
+    out.faces.push_back(build_face_patch(static_cast<int>(f), schemes[f], ribbons[f], source));
   return out;
 }
 

@@ -31,8 +31,8 @@ struct FaceRibbons;
 // The patch of one face with the given (resolved) scheme from its ribbons: the one place a face
 // becomes a patch, shared by fill_network and the network editor. Throws DataError naming
 // "network.faces[face]" for faces it cannot fill.
-FacePatch build_face_patch(const Network& network, int face, FaceScheme scheme,
-                           const FaceRibbons& ribbons, const std::string& source);
+FacePatch build_face_patch(int face, FaceScheme scheme, const FaceRibbons& ribbons,
+                           const std::string& source);
 
 // Throws DataError (source, "network.faces[i]", ...) for geometry it cannot fill.
 NetworkFilling fill_network(const Network& network, const NetworkTopology& topology,
