@@ -45,11 +45,15 @@ std::vector<Vec2> star(int points) {
 GBRibbonPatch make_patch(const std::vector<Vec2>& poly, int d0, int l1) {
   const ConcavePolygonDomain dom(poly);
   const int n = dom.side_count();
+  // Sides where the mean value coordinates would give a ribbon with d > l a pole (the T) get as
+  // many layers as their degree, as network faces do (gb_face.cpp).
+  std::vector<char> pole(n, 0);
+  for (int i : GBRibbonPatch::sides_without_positive_pair(dom)) pole[i] = 1;
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> z(-0.2, 0.2);
   std::vector<std::vector<std::vector<Vec3>>> ribbons(n);
   for (int i = 0; i < n; ++i) {
-    const int d = i == 0 ? d0 : 3, l = i == 1 ? l1 : 2;
+    const int d = i == 0 ? d0 : 3, l = std::max(i == 1 ? l1 : 2, pole[i] ? d : 0);
     const Vec2 e = dom.vertex(i) - dom.vertex(i - 1);
     const Vec2 inward = Vec2(-e.y, e.x) / glm::length(e);
     for (int k = 0; k < l; ++k) {

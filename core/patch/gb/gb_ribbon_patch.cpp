@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "core/patch/gb/blend.hpp"
@@ -124,9 +125,18 @@ struct RibbonLocal {
 void GBRibbonPatch::basis(Vec2 x, std::span<Jet> out) const {
   const int n = sides();
   const auto& v = domain_.vertices();
-  std::fill(out.begin(), out.end(), Jet(0.0));
   for (int i = 0; i < n; ++i)
-    if (x == v[i]) return gb_ribbon_corner_basis(*this, i, out);
+    if (x == v[i]) {
+      std::fill(out.begin(), out.end(), Jet(0.0));
+      return gb_ribbon_corner_basis(*this, i, out);
+    }
+  const Jet inv = reciprocal(blends(x, out));
+  for (Jet& b : out) b = b * inv;
+}
+
+Jet GBRibbonPatch::blends(Vec2 x, std::span<Jet> out) const {
+  const int n = sides();
+  std::fill(out.begin(), out.end(), Jet(0.0));
   const RibbonLocal L(params_, x);
   Jet sum(0.0);
   RibbonPowers t;
@@ -144,8 +154,7 @@ void GBRibbonPatch::basis(Vec2 x, std::span<Jet> out) const {
       }
     }
   }
-  const Jet inv = reciprocal(sum);
-  for (Jet& b : out) b = b * inv;
+  return sum;
 }
 
 SurfaceJet GBRibbonPatch::evaluate(Vec2 x) const {
@@ -235,37 +244,133 @@ SurfaceJet GBRibbonPatch::evaluate(Vec2 x) const {
   return s;
 }
 
-void GBRibbonPatch::check_parameterisation() const {
-  // Mean value coordinates can be negative behind reflex vertices; where lambda_i-1 + lambda_i
-  // reaches 0 inside the domain, s_i has a pole. Reject such domains instead of producing
-  // non-finite samples (checked on a tessellation's interior points).
-  // Inside a convex polygon they are all positive (Floater 2003), so only a domain with a reflex
-  // corner needs the sampled check; it cost ~3 ms per face, paid on every re-fill of a drag.
-  const auto& v = domain_.vertices();
-  const int count = static_cast<int>(v.size());
-  bool convex = true;
-  for (int i = 0; i < count && convex; ++i)
-    convex = cross(domain_.vertex(i) - domain_.vertex(i - 1),
-                   domain_.vertex(i + 1) - domain_.vertex(i)) > 0;
-  if (convex) return;
-  const Tessellation t = domain_.tessellate(24);
+namespace {
+
+// The points the parameterization checks look at: a tessellation's interior points.
+std::vector<Vec2> interior_samples(const ConcavePolygonDomain& domain) {
+  constexpr int kCheckDensity = 16;
+  const Tessellation t = domain.tessellate(kCheckDensity);
   std::vector<bool> boundary(t.points.size(), false);
   for (const auto& side : t.sides)
     for (uint32_t k : side) boundary[k] = true;
-  const int n = sides();
-  std::vector<Jet> lam(n), phi(size());
-  for (std::size_t k = 0; k < t.points.size(); ++k) {
-    if (boundary[k]) continue;
-    mean_value_coordinates(domain_.vertices(), t.points[k], lam);
+  std::vector<Vec2> xs;
+  for (std::size_t k = 0; k < t.points.size(); ++k)
+    if (!boundary[k]) xs.push_back(t.points[k]);
+  return xs;
+}
+
+// Samples per side of the checks on the sides.
+constexpr int kSideSamples = 16;
+
+// The least share of its coordinates' slope at which D_i may grow from a side where they all
+// vanish: |s_i| up to ~1 / kMinShare next to the side.
+constexpr double kMinShare = 1e-3;
+
+bool is_convex(const ConcavePolygonDomain& d) {
+  for (int i = 0; i < d.side_count(); ++i)
+    if (!(cross(d.vertex(i) - d.vertex(i - 1), d.vertex(i + 1) - d.vertex(i)) > 0)) return false;
+  return true;
+}
+
+std::string at(Vec2 x) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "(%.3g, %.3g)", x.x, x.y);
+  return buf;
+}
+
+}  // namespace
+
+std::vector<int> GBRibbonPatch::sides_without_positive_pair(const ConcavePolygonDomain& domain,
+                                                            std::vector<Vec2>* where) {
+  // Inside a convex polygon the coordinates are all positive (Floater 2003): only a domain with
+  // a reflex corner needs the sampled check (it costs a few ms, paid on every re-fill of a drag).
+  std::vector<int> out;
+  if (is_convex(domain)) return out;
+  const int n = domain.side_count();
+  std::vector<Jet> lam(n);
+  std::vector<char> bad(n, 0);
+  const auto flag = [&](int i, Vec2 x) {
+    if (bad[i]) return;
+    bad[i] = 1;
+    out.push_back(i);
+    if (where) where->push_back(x);
+  };
+  for (const Vec2& x : interior_samples(domain)) {
+    mean_value_coordinates(domain.vertices(), x, lam);
     for (int i = 0; i < n; ++i)
-      if (!(lam[(i + n - 1) % n].f + lam[i].f > 0))
+      if (!(lam[(i + n - 1) % n].f + lam[i].f > 0)) flag(i, x);
+  }
+  // D_i vanishes on every side s away from vertices i-1 and i, and so do lambda_{i-1} and
+  // lambda_i; s_i = lambda_i / D_i stays bounded next to side s only if D_i grows into the
+  // domain at least a fraction of as fast as they do. Where it does not, D_i is negative (or
+  // vanishes to second order) in a layer along side s too thin for the interior samples, and
+  // a ribbon with d_i > l_i has a pole there: checked on the sides.
+  for (int s = 0; s < n; ++s) {
+    const Vec2 a = domain.vertex(s - 1), b = domain.vertex(s);
+    const Vec2 inward = Vec2(a.y - b.y, b.x - a.x) / glm::length(b - a);  // CCW polygon
+    for (int k = 0; k < kSideSamples; ++k) {
+      const Vec2 x = a + ((k + 0.5) / kSideSamples) * (b - a);
+      mean_value_coordinates(domain.vertices(), x, lam);
+      for (int i = 0; i < n; ++i) {
+        const int p = (i + n - 1) % n, s0 = (s + n - 1) % n;
+        if (p == s0 || p == s || i == s0 || i == s) continue;  // D_i > 0 on side s
+        const auto slope = [&](const Jet& f) { return f.fu * inward.x + f.fv * inward.y; };
+        const double pair = std::max(std::fabs(slope(lam[p])), std::fabs(slope(lam[i])));
+        if (pair > 0 && !(slope(lam[p] + lam[i]) > kMinShare * pair)) flag(i, x);
+      }
+    }
+  }
+  return out;
+}
+
+void GBRibbonPatch::check_parameterisation() const {
+  // Mean value coordinates can be negative behind reflex vertices. Where D_i = lambda_{i-1} +
+  // lambda_i vanishes inside the domain, a ribbon with d_i > l_i has a pole (its blend carries
+  // 1 / D_i^(d_i - l_i)); a ribbon with d_i <= l_i is polynomial in the coordinates and has
+  // none. Every blend is finite then, and the patch needs only a positive sum of blends.
+  if (is_convex(domain_)) return;  // positive coordinates, positive blends
+  // h_s must grow into the domain from side s: its slope is the sum of the other coordinates'
+  // slopes, and behind reflex corners some of those are negative. Where they cancel, ribbon s
+  // has no cross-boundary direction (the surface folds along the side): no layer helps.
+  const int n = sides();
+  std::vector<Jet> lam(n);
+  for (int s = 0; s < n; ++s) {
+    const Vec2 a = domain_.vertex(s - 1), b = domain_.vertex(s);
+    const Vec2 inward = Vec2(a.y - b.y, b.x - a.x) / glm::length(b - a);
+    for (int k = 0; k < kSideSamples; ++k) {
+      const Vec2 x = a + ((k + 0.5) / kSideSamples) * (b - a);
+      mean_value_coordinates(domain_.vertices(), x, lam);
+      double slope = 0, total = 0;
+      for (int j = 0; j < n; ++j) {
+        const double sj = lam[j].fu * inward.x + lam[j].fv * inward.y;
+        total += std::fabs(sj);
+        if (j != (s + n - 1) % n && j != s) slope += sj;
+      }
+      if (!(slope > kMinShare * total))
         throw std::invalid_argument(
-            "domain too concave for mean value coordinates: lambda_i-1 + lambda_i <= 0 for side " +
-            std::to_string(i));
-    basis(t.points[k], phi);
-    for (const Jet& j : phi)
-      if (!std::isfinite(j.f) || !std::isfinite(j.fuu) || !std::isfinite(j.fvv))
-        throw std::invalid_argument("gb-ribbons blend is singular inside the domain");
+            "domain too concave for mean value coordinates: on side " + std::to_string(s) + " at " +
+            at(x) +
+            " the distance parameter h does not grow into the domain (the coordinates of "
+            "vertices hidden behind reflex corners cancel it)");
+    }
+  }
+  std::vector<Vec2> where;
+  const std::vector<int> bad = sides_without_positive_pair(domain_, &where);
+  for (std::size_t b = 0; b < bad.size(); ++b) {
+    const int i = bad[b];
+    if (degree_[i] > layers_[i])
+      throw std::invalid_argument(
+          "domain too concave for mean value coordinates: lambda_i-1 + lambda_i <= 0 at " +
+          at(where[b]) + " for side " + std::to_string(i) + ", a pole of its ribbon (degree " +
+          std::to_string(degree_[i]) + ", " + std::to_string(layers_[i]) +
+          " layers; a ribbon with as many layers as its degree has none)");
+  }
+  std::vector<Jet> phi(size());
+  for (const Vec2& x : interior_samples(domain_)) {
+    const Jet w = blends(x, phi);
+    if (!(w.f > 0) || !std::isfinite(w.fuu) || !std::isfinite(w.fuv) || !std::isfinite(w.fvv))
+      throw std::invalid_argument("gb-ribbons blend sum is not positive at " + at(x) +
+                                  " inside the domain");
   }
 }
 

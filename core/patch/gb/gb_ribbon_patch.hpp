@@ -67,9 +67,17 @@ class GBRibbonPatch final : public Patch {
   const Vec3& point(int side, int j, int k) const { return points_[index(side, j, k)]; }
   std::vector<std::vector<std::vector<Vec3>>> ribbons() const;
 
+  // The sides i of the domain where the mean value coordinates of vertices i-1 and i sum to 0 or
+  // less somewhere inside (sampled; none for a convex domain), with such a point each if
+  // `where` is given. A ribbon with d_i > l_i has a pole there; one with d_i <= l_i has none.
+  static std::vector<int> sides_without_positive_pair(const ConcavePolygonDomain& domain,
+                                                      std::vector<Vec2>* where = nullptr);
+
  private:
-  // Throws if the blend is singular somewhere inside the domain.
+  // Throws if a blend has a pole or the sum of blends is not positive inside the domain.
   void check_parameterisation() const;
+  // The blends b^i_{j,k} at x (not a vertex), unnormalised, and their sum.
+  Jet blends(Vec2 x, std::span<Jet> out) const;
 
   ConcavePolygonDomain domain_;
   MeanValueParameters params_;

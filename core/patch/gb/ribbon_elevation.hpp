@@ -31,4 +31,7 @@ GBRibbonPatch gb_ribbon_elevate(const GBRibbonPatch& patch, int side);
 // for a missing side or if l_i is already GBRibbonPatch::kMaxLayers (the format's limit).
 GBRibbonPatch gb_ribbon_add_layer(const GBRibbonPatch& patch, int side);
 
+// The same on one ribbon's rows (rows[k][j] = C_{j,k}, at least 2 rows of equal length).
+std::vector<std::vector<Vec3>> ribbon_with_layer(const std::vector<std::vector<Vec3>>& rows);
+
 }  // namespace pl
