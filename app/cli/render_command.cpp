@@ -1,4 +1,4 @@
-// `patchlab render FILE -o OUT.png ...` (../shared/spec/cli.md): headless, through an EGL
+// `patchlab render FILE -o OUT.png ...` (docs/cli.md, docs/rendering.md): headless, through an EGL
 // offscreen context, so it works with no X server and DISPLAY unset.
 #include <charconv>
 #include <cmath>

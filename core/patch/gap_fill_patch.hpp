@@ -1,4 +1,4 @@
-// G1 gap filling between two B-spline patches (seed 003): q over [c,d] x [a,b] and r over
+// G1 gap filling between two B-spline patches: q over [c,d] x [a,b] and r over
 // [e,f] x [a,b] (same v range, v knots may differ). The fill s over [0,1] x [a,b] is cubic
 // Hermite in u between the curves q(d, v) and r(e, v) with cross-boundary derivatives rescaled
 // to the gap width d(v) = |q(d,v) - r(e,v)|:

@@ -1,4 +1,4 @@
-// Bicubic Hermite (Ferguson) patch of seed 004: r(u,v) = F(u) Q F(v)^T with
+// Bicubic Hermite (Ferguson) patch: r(u,v) = F(u) Q F(v)^T with
 // F = [alpha0 alpha1 beta0 beta1] and the 4x4 matrix of corner data (points[a*4+b] = Q_ab):
 //   Q = | r(0,0)   r(0,1)   r_v(0,0)  r_v(0,1)  |
 //       | r(1,0)   r(1,1)   r_v(1,0)  r_v(1,1)  |

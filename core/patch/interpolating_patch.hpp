@@ -1,4 +1,4 @@
-// Bicubic interpolating surface of seed 002: through a 4x4 grid of points p_ij at
+// Bicubic interpolating surface: through a 4x4 grid of points p_ij at
 // (u, v) = (i/3, j/3), f(u,v) = [1 u u^2 u^3] M_I P M_I^T [1 v v^2 v^3]^T, p_ij = points[i*4+j].
 #pragma once
 

@@ -1,5 +1,5 @@
-// A G1 or G2 pair of polynomial patches joined along a common boundary (seed 003, "constructing
-// pairs of patches"). An auxiliary Bézier patch p(s, t) of degree (d, m) gives the common curve
+// A G1 or G2 pair of polynomial patches joined along a common boundary (the classic
+// construction of pairs of patches from junction functions; docs/classic-types.md). An auxiliary Bézier patch p(s, t) of degree (d, m) gives the common curve
 // p(s, 0) and, along it, the tangent plane (G1) and the normal curvatures (G2). Each final patch
 // p* is of degree 5 in u (the edge direction, u = s) and `order` in v, with p*(u, 0) = p(u, 0)
 // degree-elevated and, with its own polynomial junction functions b1, c1 (b2, c2),

@@ -1,4 +1,4 @@
-// The one interface of every patch (architecture note 1): a domain, control points, and a
+// The one interface of every patch: a domain, control points, and a
 // basis with S(x) = sum_k C_k phi_k(x). phi_k may be rational; for fixed weights the surface is
 // linear in the control points, which is what incremental re-evaluation relies on.
 #pragma once

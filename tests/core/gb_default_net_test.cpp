@@ -285,7 +285,7 @@ TEST(GBDefaultNet, FiniteForEverySideCountAndDegree) {
       }
 }
 
-// Acceptance item of issue #4: a GB patch whose control points all lie on a plane is that plane,
+// A GB patch whose control points all lie on a plane is that plane,
 // at corners, sides, the centre and inside, with the plane's normal.
 TEST(GBPatchPlanar, RandomPlanarNetsAreThePlane) {
   double worst_sample = 0, worst_angle = 0;

@@ -32,7 +32,7 @@
 // the defaults are that net, so the GB patch is that tensor-product patch; from the boundary
 // alone the translational nets f(u) + h(v) are reproduced.
 // Caveat: rule 2 extrapolates derivative data, the corner twist entering with weight j k, so a
-// wobbly ring 1 is amplified towards the middle. On the reference models (../shared/reference/gb)
+// wobbly ring 1 is amplified towards the middle. On the reference models (tests/data/gb)
 // the default surface from rings 0 and 1 stays within 0.54 % of the designed cagd86 surface and
 // 0.32 .. 4.2 % of the dome models (largest distance over the reference samples, relative to the
 // net's diagonal); on the tp4 nets, whose heights are random numbers, it is 4e-16 (d = 3,
