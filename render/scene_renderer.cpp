@@ -29,7 +29,8 @@ SceneRenderer::SceneRenderer()
     : surface_("surface.vert.glsl", "", "surface.frag.glsl"),
       lines_("line.vert.glsl", "line.geom.glsl", "line.frag.glsl"),
       points_("line.vert.glsl", "point.geom.glsl", "point.frag.glsl"),
-      backdrop_("backdrop.vert.glsl", "", "backdrop.frag.glsl") {
+      backdrop_("backdrop.vert.glsl", "", "backdrop.frag.glsl"),
+      tint_("tint.vert.glsl", "", "tint.frag.glsl") {
   const std::vector<float> table = color_map_table(kColorMapEntries);
   glBindTexture(GL_TEXTURE_2D, color_map_.id());
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, kColorMapEntries, 1, 0, GL_RGB, GL_FLOAT, table.data());
@@ -135,6 +136,49 @@ void SceneRenderer::draw_backdrop(const Viewport& v) const {
   glBindVertexArray(empty_vao_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
+}
+
+void SceneRenderer::draw_tint(const GpuScene& scene, std::span<const int> surfaces,
+                              const Camera& camera, const std::array<float, 4>& color,
+                              const Viewport& v) const {
+  if (surfaces.empty()) return;
+  glViewport(v.x, v.y, v.width, v.height);
+  const glm::mat4 vp(camera.projection(double(v.width) / double(v.height)) * camera.view());
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_FALSE);
+  // The same triangles as the surface pass, pulled forward so they win the depth test.
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(-1.0f, -1.0f);
+  glEnable(GL_BLEND);
+  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  tint_.use();
+  glUniformMatrix4fv(tint_.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
+  glUniform4f(tint_.uniform("u_color"), color[0], color[1], color[2], color[3]);
+  for (int i : surfaces)
+    if (i >= 0 && i < int(scene.surfaces().size())) scene.surfaces()[i].draw();
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glDisable(GL_BLEND);
+  glDepthMask(GL_TRUE);
+  glBindVertexArray(0);
+  gl::check_error("SceneRenderer::draw_tint");
+}
+
+void SceneRenderer::draw_guides(const GpuPrimitives& lines, const Camera& camera,
+                                const std::array<float, 4>& color, float width, bool show_hidden,
+                                const Viewport& v) const {
+  if (lines.empty()) return;
+  glViewport(v.x, v.y, v.width, v.height);
+  const glm::mat4 vp(camera.projection(double(v.width) / double(v.height)) * camera.view());
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glEnable(GL_BLEND);
+  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  const float c[4] = {color[0], color[1], color[2], color[3]};
+  draw_lines(lines, vp, v, c, width * float(v.pixel_scale), show_hidden);
+  glDisable(GL_BLEND);
+  glBindVertexArray(0);
+  gl::check_error("SceneRenderer::draw_guides");
 }
 
 void SceneRenderer::draw_combs(const GpuCombs& combs, bool own_only, const glm::mat4& vp,

@@ -3,6 +3,9 @@
 // the programs and the colour map texture, not the scene.
 #pragma once
 
+#include <array>
+#include <span>
+
 #include "render/camera.hpp"
 #include "render/display_settings.hpp"
 #include "render/gl_objects.hpp"
@@ -28,6 +31,18 @@ class SceneRenderer {
   // The studio backdrop (a soft gradient) over `viewport`, without touching depth.
   void draw_backdrop(const Viewport& viewport) const;
 
+  // Highlights over a scene just drawn with draw() and the same camera (the editor's selection):
+  // the given surfaces of `scene` tinted with `color` (RGBA, blended; depth-tested, so what the
+  // scene hides stays hidden). Indices outside the scene are ignored.
+  void draw_tint(const GpuScene& scene, std::span<const int> surfaces, const Camera& camera,
+                 const std::array<float, 4>& color, const Viewport& viewport) const;
+  // Lines of one colour (highlighted curves, a work-plane grid) over the scene, `width` pixels
+  // (times the viewport's pixel scale); with show_hidden their parts behind surfaces are drawn
+  // faintly, as the control net's are.
+  void draw_guides(const GpuPrimitives& lines, const Camera& camera,
+                   const std::array<float, 4>& color, float width, bool show_hidden,
+                   const Viewport& viewport) const;
+
  private:
   // offset_scale and offset_max place comb vertices (see line.vert.glsl); 0 for plain lines.
   // count: the first vertices only (all when negative).
@@ -37,7 +52,7 @@ class SceneRenderer {
   // own_only: the combs' first own_teeth / own_envelope vertices (GpuCombs).
   void draw_combs(const GpuCombs& combs, bool own_only, const glm::mat4& vp, const Viewport& v,
                   float offset_scale, float offset_max) const;
-  gl::Program surface_, lines_, points_, backdrop_;
+  gl::Program surface_, lines_, points_, backdrop_, tint_;
   gl::VertexArray empty_vao_;  // the backdrop has no attributes, but core profiles need a VAO
   gl::Texture color_map_;
 };

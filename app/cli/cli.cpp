@@ -11,7 +11,10 @@ namespace pl {
 
 std::span<const Command> commands() {
   static const std::array table{
-      Command{"export", "FILE -o OUT.{obj,ply,off,stl} [--density N] [--scheme gregory|gb]",
+      Command{"export",
+              "FILE -o OUT.{obj,ply,off,stl} [--density N] [--scheme gregory|gb]\n"
+              "                       FILE -o OUT.{step,stp,igs,iges} [--tolerance T] "
+              "[--scheme gregory|gb]",
               run_export},
       Command{"analyze", "FILE [--density N] [--scheme gregory|gb] [--json]", run_analyze},
       Command{"convert", "IN -o OUT  (.gbp <-> .json scene)", run_convert},

@@ -27,11 +27,11 @@ double percentile(std::vector<double> v, double q) {
 }  // namespace
 
 int Editor::run_drag_benchmark() {
-  if (!doc_.scene().network || doc_.scene().network->vertices.empty()) {
+  if (!session_.doc().scene().network || session_.doc().scene().network->vertices.empty()) {
     std::fprintf(stderr, "patchlab: --bench-drag needs a scene with a curve network\n");
     return 1;
   }
-  const Network& net = *doc_.scene().network;
+  const Network& net = *session_.doc().scene().network;
   std::vector<int> valence(net.vertices.size(), 0);
   for (const NetworkEdge& e : net.edges) ++valence.at(e.v[0]), ++valence.at(e.v[1]);
   const int vertex = int(std::max_element(valence.begin(), valence.end()) - valence.begin());
@@ -41,25 +41,25 @@ int Editor::run_drag_benchmark() {
   }
   glFinish();
   const PointRef ref = PointRef::vertex(vertex);
-  const Vec3 start = point_position(doc_.scene(), ref);
-  const double amplitude = 0.15 * std::max(camera_.scene_radius, 1e-9);
-  doc_.begin_drag({ref});
+  const Vec3 start = point_position(session_.doc().scene(), ref);
+  const double amplitude = 0.15 * std::max(nav_.camera().scene_radius, 1e-9);
+  session_.doc().begin_drag({ref});
   std::vector<double> ms;
   double eval_ms = 0;  // the core's share: coarse re-evaluation and mesh arrays
   auto t_begin = Clock::now();
   for (int k = 0; k < kDragFrames; ++k) {
     const auto t0 = Clock::now();
     const double a = 2 * 3.141592653589793 * k / 90.0;
-    doc_.drag_to(
+    session_.doc().drag_to(
         {start + amplitude * Vec3(std::sin(a), 0.5 * std::sin(2 * a), 0.6 * std::cos(a) - 0.6)});
     glfwPollEvents();
     frame();
     glFinish();
-    eval_ms += last_eval_ms_;
+    eval_ms += status_.eval_ms;
     ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
   }
   const double total = std::chrono::duration<double>(Clock::now() - t_begin).count();
-  doc_.end_drag();
+  session_.doc().end_drag();
   const auto release = Clock::now();
   int settle_frames = 0;
   do {
@@ -67,10 +67,10 @@ int Editor::run_drag_benchmark() {
     frame();
     glFinish();
     ++settle_frames;
-  } while (!main_view_->settled() && settle_frames < 100);
+  } while (!views_.settled() && settle_frames < 100);
   const double settle = std::chrono::duration<double, std::milli>(Clock::now() - release).count();
   std::size_t samples = 0;
-  for (const SurfaceMesh& m : main_view_->fine().draw().surfaces) samples += m.positions.size();
+  for (const SurfaceMesh& m : views_.main()->fine().draw().surfaces) samples += m.positions.size();
   std::printf(
       "# drag of vertex %d, %d frames at %dx%d, densities %d (drag) / %d (rest), "
       "%zu fine samples\n",

@@ -1,14 +1,19 @@
 #include "app/editor/editor.hpp"
 
+#include <cstdio>
+#include <stdexcept>
+#include <utility>
+
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
 #include <imgui.h>
 
-#include <cstdio>
-#include <iostream>
-
+#include "app/editor/action_menus.hpp"
+#include "app/editor/editor_windows.hpp"
 #include "app/editor/logic/editor_paths.hpp"
+#include "app/editor/logic/select_tool.hpp"
+#include "app/editor/side_panel.hpp"
 #include "core/base/data_error.hpp"
 
 namespace pl {
@@ -18,16 +23,34 @@ namespace {
 // How long the loop sleeps waiting for input when nothing animates (a tool should not spin a
 // core while idle); short enough that a release's fine surfaces appear at once anyway.
 constexpr double kIdleWaitSeconds = 0.25;
-constexpr std::size_t kFrameHistory = 120;
 
 }  // namespace
 
-Editor::Editor(GlWindow& window, EditorOptions options)
-    : window_(window), options_(std::move(options)) {
+Editor::Editor(GlWindow& window, EditorOptions options, DocumentSession session)
+    : window_(window),
+      options_(std::move(options)),
+      session_(std::move(session)),
+      dialogs_(FileDialogs::Handlers{[this](const std::filesystem::path& p) { open_file(p); },
+                                     [this](const std::filesystem::path& p) { save_as(p); },
+                                     [this](const std::filesystem::path& p) { export_mesh(p); },
+                                     [this](const std::filesystem::path& p) { take_screenshot(p); },
+                                     [this] {
+                                       if (session_.untitled()) return false;
+                                       save();
+                                       return true;
+                                     },
+                                     [this] { return session_.doc().dirty(); },
+                                     [this] { return browse_start_dir(); }}) {
   if (const auto dir = config_dir()) prefs_file_ = *dir / "preferences.ini";
   prefs_ = prefs_file_ ? load_preferences(*prefs_file_) : default_preferences();
   ui_scale_ = prefs_.ui_scale > 0 ? static_cast<float>(prefs_.ui_scale) : window_.content_scale();
   window_.apply_ui_scale(ui_scale_);
+  tools_.add(std::make_unique<SelectTool>());
+  register_actions();
+  // A key given to two commands is a programmer's error: refuse to start (the end-to-end tests
+  // start the editor, so they catch it).
+  if (const auto clashes = actions_.conflicts(); !clashes.empty())
+    throw std::logic_error("a key is bound to two commands: " + clashes.front());
   glfwSetWindowUserPointer(window_.handle(), this);
   glfwSetDropCallback(window_.handle(), [](GLFWwindow* w, int count, const char** paths) {
     auto* self = static_cast<Editor*>(glfwGetWindowUserPointer(w));
@@ -39,150 +62,96 @@ Editor::Editor(GlWindow& window, EditorOptions options)
         auto* self = static_cast<Editor*>(glfwGetWindowUserPointer(w));
         if (action != GLFW_RELEASE) self->key_presses_.emplace_back(key, mods);
       });
-  last_frame_ = Clock::now();
 }
 
 Editor::~Editor() {
-  save_preferences_now();
-}
-
-void Editor::save_preferences_now() {
   if (prefs_file_ && !options_.bench_drag) save_preferences(*prefs_file_, prefs_);
 }
 
-void Editor::set_document(Document doc) {
-  doc_ = std::move(doc);
-  selection_.clear();
-  hover_.reset();
-  point_drag_ = false;
-  camera_framed_ = false;
-  report_revision_ = UINT64_MAX;
-  difference_revision_ = UINT64_MAX;
-  rebuild_views();
-  update_title();
+EditorLayout Editor::layout() const {
+  const ImGuiIO& io = ImGui::GetIO();
+  return {Vec2(io.DisplaySize.x, io.DisplaySize.y), ImGui::GetFrameHeight(),
+          ImGui::GetFrameHeight() + 6.0 * ui_scale_, ui_scale_};
 }
 
-void Editor::rebuild_views() {
-  if (options_.compare) {
-    compare_ = true;
-    options_.compare = false;
-  }
-  main_view_.reset();
-  compare_views_[0].reset();
-  compare_views_[1].reset();
-  view_error_.clear();
-  try {
-    const bool combs = prefs_.display.combs;
-    const int teeth = prefs_.display.comb_teeth;
-    main_view_ = std::make_unique<EvaluatedView>(doc_, std::nullopt, prefs_.coarse_density,
-                                                 prefs_.fine_density, combs, teeth);
-    if (compare_ && doc_.scene().network) {
-      compare_views_[0] = std::make_unique<EvaluatedView>(
-          doc_, FaceScheme::Gregory, prefs_.coarse_density, prefs_.fine_density, combs, teeth);
-      compare_views_[1] = std::make_unique<EvaluatedView>(
-          doc_, FaceScheme::GB, prefs_.coarse_density, prefs_.fine_density, combs, teeth);
-    }
-  } catch (const DataError& e) {
-    view_error_ = e.what();
-  }
-  if (compare_ && !compare_views_[0]) compare_ = false;
+Box Editor::scene_box() const {
+  return views_.ready() ? views_.main()->shown().draw().bounds() : Box();
+}
+
+PickScene Editor::pick_scene(int panel, std::vector<SelectionItem>& items) const {
+  const LiveSurfaces& live = views_.panel(panel).shown();
+  items = surface_items(live.surfaces());
+  return {live.draw().surfaces, items, live.draw().network_curves, &live.points()};
+}
+
+ToolContext Editor::tool_context() {
+  return {session_.doc(), selection_, nav_.camera(), work_plane_,
+          [this](const std::string& m) { status_.say(m); }};
+}
+
+void Editor::after_document_replaced() {
+  session_serial_ = session_.serial();
+  ToolContext ctx = tool_context();
+  tools_.active().cancel(ctx);
+  selection_.clear();
+  mouse_ = {};
+  context_.reset();
+  release_time_.reset();
+  for (ScenePicker& p : pickers_) p.reset();
+  continuity_.reset();
+  nav_.unframe();
+  followed_revision_ = UINT64_MAX;
+  // --compare applies to the first document; later ones keep the layout the user chose.
+  rebuild_views(std::exchange(options_.compare, false) || views_.compare());
+}
+
+void Editor::rebuild_views(bool compare) {
+  views_.rebuild(session_.doc(), prefs_, compare);
+  for (ScenePicker& p : pickers_) p.reset();
+}
+
+void Editor::set_compare(bool on) {
+  if (on == views_.compare() || (on && !session_.doc().scene().network)) return;
+  rebuild_views(on);
+  nav_.frame(scene_box(), layout().panels(views_.compare())[0].aspect());  // a new aspect
 }
 
 void Editor::follow_document() {
-  const auto t0 = Clock::now();
-  bool changed = false;
+  if (session_.serial() != session_serial_) after_document_replaced();
+  const Document& doc = session_.doc();
   try {
-    // Combs turned on or off, or a new tooth count: the views resample their curves in follow()
-    // (nothing is re-evaluated; no comb work while combs are off).
-    const DisplaySettings& d = prefs_.display;
-    if (main_view_) {
-      main_view_->configure_combs(d.combs, d.comb_teeth);
-      changed |= main_view_->follow(doc_);
-    }
-    if (compare_)
-      for (auto& v : compare_views_)
-        if (v) {
-          v->configure_combs(d.combs, d.comb_teeth);
-          changed |= v->follow(doc_);
-        }
+    if (views_.follow(doc, prefs_.display)) status_.eval_ms = views_.last_eval_ms();
   } catch (const DataError& e) {
-    status_message_ = e.what();
-    status_time_ = Clock::now();
+    status_.say(e.what());
   }
-  if (changed) last_eval_ms_ = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  if (doc.revision() != followed_revision_) {
+    followed_revision_ = doc.revision();
+    selection_.prune(doc.scene());  // an undo or a topology edit may have removed objects
+  }
   // Continuity figures follow the fine surfaces only: analysing every drag step would cost
   // more than the drag itself.
-  if (main_view_ && main_view_->settled() && report_revision_ != doc_.revision()) {
-    report_revision_ = doc_.revision();
-    report_ = analyze_scene(doc_.scene(), main_view_->fine().surfaces());
-    worst_edge_ = -1;
-    for (std::size_t i = 0; i < report_.edges.size(); ++i)
-      if (worst_edge_ < 0 ||
-          report_.edges[i].max_normal_angle_deg > report_.edges[worst_edge_].max_normal_angle_deg)
-        worst_edge_ = static_cast<int>(i);
-  }
+  if (views_.settled())
+    continuity_.follow(doc.scene(), views_.main()->fine().surfaces(), doc.revision());
 }
 
 void Editor::update_title() {
-  const std::string name =
-      doc_.path().empty() ? std::string("untitled") : doc_.path().filename().string();
-  const std::string title = name + (doc_.dirty() ? " *" : "") + " - PatchLab";
+  const std::string title = session_.title() + " - PatchLab";
   if (title != shown_title_) {
     window_.set_title(title);
     shown_title_ = title;
   }
 }
 
-void Editor::show_error(const std::string& title, const std::string& message) {
-  error_title_ = title;
-  error_message_ = message;
-  error_pending_ = true;
-  std::cerr << "patchlab: " << message << "\n";
-}
-
-void Editor::confirm_discard(const std::string& what, std::function<void()> action) {
-  if (!doc_.dirty()) {
-    action();
-    return;
-  }
-  confirm_what_ = what;
-  confirm_action_ = std::move(action);
-  confirm_pending_ = true;
-}
-
-void Editor::report_debug_point() {
-  if (!options_.debug_point || debug_point_reported_ || !main_view_) return;
-  const auto rects = panel_rects();
-  if (!point_exists(doc_.scene(), *options_.debug_point)) {
-    std::cout << "debug-point missing" << std::endl;
-    debug_point_reported_ = true;
-    return;
-  }
-  const Vec3 p = point_position(doc_.scene(), *options_.debug_point);
-  const auto s = project_to_window(camera_, rects[0], p);
-  if (!s) return;
-  int wx = 0, wy = 0;
-  glfwGetWindowPos(window_.handle(), &wx, &wy);
-  const double wpp = world_per_pixel(camera_, rects[0], p);
-  const Vec3 r = camera_.right(), u = camera_.up();
-  std::printf(
-      "debug-point %.3f %.3f window %d %d world-per-pixel %.17g right %.17g %.17g %.17g "
-      "up %.17g %.17g %.17g\n",
-      s->x, s->y, wx, wy, wpp, r.x, r.y, r.z, u.x, u.y, u.z);
-  std::fflush(stdout);
-  debug_point_reported_ = true;
-}
-
 int Editor::run() {
   while (!quit_) {
     if (glfwWindowShouldClose(window_.handle())) {
       glfwSetWindowShouldClose(window_.handle(), GLFW_FALSE);
-      confirm_discard("quit", [this] { quit_ = true; });
+      dialogs_.confirm_discard("quit", [this] { quit_ = true; });
     }
     // Sleep until input unless something is animating (a drag settling, the first frames, which
-    // ImGui needs to lay its windows out, or a pending message).
-    const bool busy = frames_ < 4 || release_time_ || doc_.dragging() || point_drag_ ||
-                      camera_drag_ != CameraDrag::None;
+    // ImGui needs to lay its windows out, or a gesture).
+    const bool busy = frames_ < 4 || release_time_ || session_.doc().dragging() ||
+                      mouse_.tool_has_it || nav_.gesture() != ViewNavigator::Gesture::None;
     if (busy)
       glfwPollEvents();
     else
@@ -192,37 +161,102 @@ int Editor::run() {
   return 0;
 }
 
+void Editor::draw_interface(const ColorRange& range) {
+  draw_menu_bar(actions_);
+  const EditorLayout l = layout();
+  const SidePanel panel{prefs_,      views_,      session_.doc(), selection_, actions_,
+                        continuity_, work_plane_, tools_,         range,      ui_scale_};
+  if (draw_side_panel(panel, l.menu_height, l.status_height)) rebuild_views(views_.compare());
+
+  StatusFigures figures;
+  figures.coarse = views_.ready() && !views_.settled();
+  figures.selected = selection_.size();
+  figures.tool = tools_.active().name();
+  if (mouse_.under.item) figures.under = describe(*mouse_.under.item);
+  if (work_plane_.shown && mouse_.panel >= 0) {
+    const ImGuiIO& io = ImGui::GetIO();
+    const Ray ray = window_ray(nav_.camera(), l.panels(views_.compare())[mouse_.panel],
+                               Vec2(io.MousePos.x, io.MousePos.y));
+    if (const auto p = work_plane_.hit(nav_.camera(), ray)) {
+      char b[128];
+      std::snprintf(b, sizeof b, "%s plane %.4g %.4g %.4g", work_plane_name(work_plane_.kind), p->x,
+                    p->y, p->z);
+      figures.plane = b;
+    }
+  }
+  draw_status_bar(status_, figures, ui_scale_);
+
+  if (prefs_.show_probe && mouse_.probe && views_.ready()) {
+    const auto& meshes = views_.panel(mouse_.panel).shown().draw().surfaces;
+    const int s = mouse_.probe->surface;
+    draw_probe_window(*mouse_.probe, s >= 0 && s < int(meshes.size()) ? meshes[s].name : "",
+                      ui_scale_);
+  }
+  if (show_help_) draw_help_window(&show_help_, actions_, ui_scale_);
+  if (context_) {
+    MenuItemProbe probe;
+    // Reported once, on the third frame of the menu: ImGui lays a popup out while it is hidden
+    // on its first frame and may move it on the second.
+    if (debugging() && ++debug_.menu_frames == 3)
+      probe = [this](const std::string& label, float x0, float y0, float x1, float y1) {
+        report_menu_item(label, x0, y0, x1, y1);
+      };
+    if (!draw_context_menu(actions_, *context_, probe)) context_.reset();
+  }
+  dialogs_.draw(prefs_, ui_scale_, views_.compare(), session_.doc().path().stem().string());
+}
+
 void Editor::frame() {
   const auto start = Clock::now();
   window_.begin_frame();
+  // A document replaced last frame (a menu, a dialog) first resets the parts that held the old
+  // one; so does one replaced by a dropped file or a key now (handle_keys sees to that).
+  if (session_.serial() != session_serial_) after_document_replaced();
   handle_drops();
-  handle_shortcuts();
-  handle_viewport_mouse();
+  if (session_.serial() != session_serial_) after_document_replaced();
+  handle_keys();
+  handle_mouse();
   follow_document();
-  draw_viewport();
-  draw_menu_bar();
-  draw_side_panel();
-  draw_status_bar();
-  draw_probe_window();
-  if (show_help_) draw_help_window();
-  draw_file_dialogs();
-  draw_modals();
+  if (views_.ready() && !nav_.framed()) {
+    // An empty scene is framed as the unit cube about the origin, where new points go.
+    const Box box = scene_box().empty() ? Box{Vec3(-1), Vec3(1)} : scene_box();
+    nav_.preset(ViewPreset::Iso, box, layout().panels(views_.compare())[0].aspect());
+  }
+  const EditorLayout l = layout();
+  ViewportFrame f;
+  f.window = window_.handle();
+  f.renderer = &renderer_;
+  f.views = &views_;
+  f.doc = &session_.doc();
+  f.camera = &nav_.camera();
+  f.prefs = &prefs_;
+  f.selection = &selection_;
+  f.work_plane = &work_plane_;
+  f.continuity = &continuity_;
+  f.viewport = l.viewport();
+  f.panels = l.panels(views_.compare());
+  f.hover_panel = mouse_.panel;
+  f.hover = &mouse_.under;
+  f.probe = &mouse_.probe;
+  f.ui_scale = ui_scale_;
+  const ColorRange range = views_.colour_range(prefs_.display, session_.doc().revision());
+  painter_.paint(f, range);
+  draw_interface(range);
   update_title();
   window_.end_frame();
   key_presses_.clear();
+  if (debugging()) report_selection_change();
   const auto now = Clock::now();
   // Settle time: from the release to the swap of the first frame showing the fine surfaces.
-  if (release_time_ && main_view_ && main_view_->settled()) {
-    last_settle_ms_ = std::chrono::duration<double, std::milli>(now - *release_time_).count();
+  if (release_time_ && views_.settled()) {
+    status_.settle_ms = std::chrono::duration<double, std::milli>(now - *release_time_).count();
     release_time_.reset();
   }
   // The work of a frame, not the idle wait for input before it.
-  frame_ms_.push_back(std::chrono::duration<double, std::milli>(now - start).count());
-  if (frame_ms_.size() > kFrameHistory) frame_ms_.pop_front();
-  last_frame_ = now;
+  status_.add_frame(std::chrono::duration<double, std::milli>(now - start).count());
   ++frames_;
   // Report only once the layout is final (ImGui hides new windows on their first frame).
-  if (frames_ >= 3) report_debug_point();
+  if (frames_ >= 3) report_debug_items();
   if (frames_ == 3 && options_.screenshot) {
     take_screenshot(*options_.screenshot);
     quit_ = true;

@@ -1,28 +1,42 @@
-// The editor: a document, its live evaluations (the scene's own filling, and Gregory vs GB for
-// the comparison), the camera and the selection, drawn with the renderer into a GLFW window with
-// a Dear ImGui interface. The methods are spread over one file per job: editor.cpp (main loop,
-// document lifetime), editor_input.cpp (mouse and keys), editor_viewport.cpp (drawing the
-// views and their overlays), editor_panels.cpp (menus, side panel, status bar, help),
-// editor_files.cpp (open/save/import/export, modals), drag_benchmark.cpp.
+// The editor: it only composes its parts and runs the frame loop. Each part owns its state:
+//   DocumentSession   the document, its file and the read-only sample folders  (logic)
+//   SceneViews        the evaluated fillings shown and their GPU copies         (GL)
+//   ViewNavigator     the camera and the orbit / pan / zoom gestures           (logic)
+//   Selection         what is selected; ScenePicker what lies under the cursor (logic)
+//   ToolBox           the active tool (select and drag; authoring tools)      (logic)
+//   WorkPlane         where tools place new points, drawn as a grid          (logic)
+//   ContinuityMonitor the Continuity panel's figures                        (logic)
+//   ActionRegistry    every command: menus, context menu, keys, F1          (logic)
+//   StatusLine        status-bar figures and messages                       (logic)
+//   FileDialogs       file browser and modal questions                      (GUI)
+//   ViewportPainter   highlights, grid and overlays over the 3D view        (GL)
+// The methods below are the glue, one file per job: editor.cpp (loop, document lifetime),
+// editor_actions.cpp (the action table), editor_input.cpp (keys and mouse to actions, tools
+// and gestures), editor_files.cpp (open, save, export, screenshot), editor_debug.cpp (what
+// scripts and tests read back), drag_benchmark.cpp, pick_benchmark.cpp.
 #pragma once
 
 #include <chrono>
-#include <deque>
 #include <filesystem>
-#include <functional>
-#include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
-#include "app/document/document.hpp"
-#include "app/editor/evaluated_view.hpp"
-#include "app/editor/file_browser.hpp"
+#include "app/editor/file_dialogs.hpp"
 #include "app/editor/gl_window.hpp"
+#include "app/editor/logic/actions.hpp"
+#include "app/editor/logic/continuity_monitor.hpp"
+#include "app/editor/logic/document_session.hpp"
+#include "app/editor/logic/editor_layout.hpp"
 #include "app/editor/logic/preferences.hpp"
+#include "app/editor/logic/scene_picker.hpp"
+#include "app/editor/logic/status_line.hpp"
 #include "app/editor/logic/surface_probe.hpp"
-#include "app/editor/logic/view_math.hpp"
-#include "core/analysis/scene_analysis.hpp"
+#include "app/editor/logic/tool.hpp"
+#include "app/editor/logic/view_navigator.hpp"
+#include "app/editor/scene_views.hpp"
+#include "app/editor/viewport_painter.hpp"
 #include "render/scene_renderer.hpp"
 
 namespace pl {
@@ -30,7 +44,10 @@ namespace pl {
 struct EditorOptions {
   std::optional<std::filesystem::path> file;
   bool bench_drag = false;
-  std::optional<PointRef> debug_point;  // print its window position once the view is shown
+  bool bench_pick = false;
+  // Objects whose window position is printed once the view is shown ("vertex 2", "face 1",
+  // "edge 3"); with any, selection changes, context-menu items and saves are printed too.
+  std::vector<SelectionItem> debug_items;
   int width = 1440, height = 900;
   bool compare = false;                             // start split: Gregory | GB
   std::optional<std::filesystem::path> screenshot;  // write one, then quit (scripts, docs)
@@ -38,134 +55,108 @@ struct EditorOptions {
 
 class Editor {
  public:
-  Editor(GlWindow& window, EditorOptions options);
+  // `session` holds the startup document: a file the user named, the default scene (an
+  // untitled copy) or a benchmark scene.
+  Editor(GlWindow& window, EditorOptions options, DocumentSession session);
   ~Editor();
-  void load(Document doc) { set_document(std::move(doc)); }
   int run();                 // the interactive loop; returns the exit code
   int run_drag_benchmark();  // drag_benchmark.cpp
 
  private:
   using Clock = std::chrono::steady_clock;
 
+  // What the mouse is over and what the last press hit: the glue between the picker, the
+  // navigator, the active tool and the context menu.
+  struct Mouse {
+    int panel = -1;      // view panel under the cursor, -1 if none
+    PickResult under;    // what lies under the cursor this frame
+    PickResult pressed;  // what lay under it at the last press (a click acts on it)
+    int pressed_panel = -1;
+    std::optional<Vec3> pressed_point;  // the world point under the last press, if any
+    bool tool_has_it = false;           // the active tool took the left press
+    bool context_press = false;         // a right press that may end as a click: the context menu
+    std::optional<ProbeHit> probe;
+  };
+
   // editor.cpp
   void frame();
-  void set_document(Document doc);
-  void rebuild_views();
   void follow_document();
+  void after_document_replaced();
+  void rebuild_views(bool compare);
   void update_title();
-  void show_error(const std::string& title, const std::string& message);
-  void report_debug_point();
-  void save_preferences_now();
-  // Runs `action` now, or after asking when there are unsaved changes.
-  void confirm_discard(const std::string& what, std::function<void()> action);
+  EditorLayout layout() const;
+  Box scene_box() const;
+  PickScene pick_scene(int panel, std::vector<SelectionItem>& items) const;
+  ToolContext tool_context();
+  void set_compare(bool on);
+
+  // editor_actions.cpp
+  void register_actions();
 
   // editor_input.cpp
-  void handle_shortcuts();
-  void handle_ctrl_key(int key, bool shift);
-  void handle_viewport_mouse();
-  void begin_point_drag(const ViewRect& rect);
-  void nudge_selection(const Vec3& direction);
-  void frame_all();
-  void frame_selection();
-  void set_preset(ViewPreset preset);
-  Vec3 orbit_pivot() const;
+  void handle_keys();
+  void handle_mouse();
+  PointerEvent pointer_event(const ViewRect& rect, const PickResult* under) const;
   std::optional<Vec3> held_axis() const;
-
-  // editor_viewport.cpp
-  void draw_viewport();
-  void draw_overlays(const ViewRect& rect, const EvaluatedView& view);
-  void draw_legend(const ViewRect& rect, const ColorRange& range, const std::string& title);
-  ColorRange current_range() const;
-  ViewRect viewport_rect() const;  // the window area left for the 3D view
-  std::vector<ViewRect> panel_rects() const;
-  const EvaluatedView& panel_view(int panel) const;
-  int panel_at(const Vec2& pixel) const;
-  void refresh_difference();
-
-  // editor_panels.cpp
-  void draw_menu_bar();
-  void draw_side_panel();
-  void draw_display_section();
-  void draw_selection_section();
-  void draw_continuity_section();
-  void draw_comparison_section();
-  void draw_status_bar();
-  void draw_help_window();
-  void draw_probe_window();
+  Vec3 orbit_pivot() const;
+  void nudge_selection(const KeyChord& chord);
+  void escape();
 
   // editor_files.cpp
+  void new_scene();
   void open_file(const std::filesystem::path& path);
-  void save();
+  void save();  // Save, or Save As for an untitled document
   void save_as(const std::filesystem::path& path);
   void export_mesh(const std::filesystem::path& path);
   void take_screenshot(const std::filesystem::path& path);
-  void draw_file_dialogs();
-  void draw_modals();
   void handle_drops();
   std::filesystem::path browse_start_dir() const;
+
+  // editor_debug.cpp
+  void report_debug_items();
+  void report_selection_change();
+  void report_menu_item(const std::string& label, float x0, float y0, float x1, float y1);
+  bool debugging() const { return !options_.debug_items.empty(); }
+
+  // The menus, panels and windows, given the parts they show; `range` is the colour range shown.
+  void draw_interface(const ColorRange& range);
 
   GlWindow& window_;
   EditorOptions options_;
   Preferences prefs_;
   std::optional<std::filesystem::path> prefs_file_;
-  Document doc_;
+  DocumentSession session_;
+  uint64_t session_serial_ = UINT64_MAX;  // the document the other parts were set up for
+  uint64_t followed_revision_ = UINT64_MAX;
   SceneRenderer renderer_;
-  std::unique_ptr<EvaluatedView> main_view_;
-  std::unique_ptr<EvaluatedView> compare_views_[2];  // Gregory, GB
-  std::string view_error_;  // why the scene could not be evaluated (drawn instead of it)
-
-  Camera camera_;
-  bool camera_framed_ = false;
-  bool compare_ = false;
-  bool difference_ = false;
-  std::unique_ptr<GpuScene> difference_gpu_;
-  double difference_max_ = 0;
-  uint64_t difference_revision_ = UINT64_MAX;
-
-  // Selection and interaction.
-  std::vector<PointRef> selection_;
-  std::optional<PointRef> hover_;
-  int hover_derived_ = -1;  // index of a hovered derived point (tooltip only)
-  bool point_drag_ = false;
-  DragMotion drag_motion_;
-  ViewRect drag_rect_;
-  std::vector<Vec3> drag_start_positions_, drag_last_positions_;
-  enum class CameraDrag { None, Orbit, Pan } camera_drag_ = CameraDrag::None;
-  Vec3 orbit_pivot_at_press_{0.0};
-  bool clear_on_click_ = false;
-  std::optional<ProbeHit> probe_;
-
-  // Continuity figures of the fine evaluation (recomputed when it changes, not while dragging).
-  SceneReport report_;
-  uint64_t report_revision_ = UINT64_MAX;
-  int worst_edge_ = -1;        // index into report_.edges
-  int highlighted_edge_ = -1;  // network edge picked in the table
-
-  // Timing.
-  Clock::time_point last_frame_;
-  std::deque<double> frame_ms_;
-  double last_eval_ms_ = 0;
+  SceneViews views_;
+  ViewNavigator nav_;
+  Selection selection_;
+  ScenePicker pickers_[2];  // one per panel: each shows its own filling
+  ToolBox tools_;
+  WorkPlane work_plane_;
+  ContinuityMonitor continuity_;
+  ActionRegistry actions_;
+  StatusLine status_;
+  FileDialogs dialogs_;
+  ViewportPainter painter_;
+  Mouse mouse_;
+  std::optional<ContextTarget> context_;           // the right-click menu is open on this
   std::optional<Clock::time_point> release_time_;  // waiting for the fine surfaces
-  double last_settle_ms_ = 0;
+  // What editor_debug.cpp has printed: the objects' positions, the last selection, and the
+  // frames the context menu has been open (its items are printed once laid out).
+  struct DebugState {
+    bool positions = false;
+    uint64_t selection = 0;
+    int menu_frames = 0;
+  } debug_;
 
-  // Dialogs and messages.
-  FileBrowser browser_;
-  enum class BrowseFor { Open, SaveAs, ExportMesh, Screenshot } browse_for_ = BrowseFor::Open;
-  std::string error_title_, error_message_;
-  bool error_pending_ = false;
-  std::string confirm_what_;
-  std::function<void()> confirm_action_;
-  bool confirm_pending_ = false;
+  // Key presses since the last frame (key, mods): ImGui 1.86 keeps only the key state, so a press
+  // and release between two frames (xdotool, a fast typist) would be lost. Dropped files too.
+  std::vector<std::pair<int, int>> key_presses_;
+  std::vector<std::string> dropped_;
   bool quit_ = false;
   bool show_help_ = false;
-  bool show_screenshot_ = false;
-  std::string status_message_;
-  Clock::time_point status_time_;
-  std::vector<std::string> dropped_;
-  // Key presses since the last frame (key, mods): ImGui 1.86 keeps only the key state, so a press
-  // and release between two frames (xdotool, a fast typist) would be lost.
-  std::vector<std::pair<int, int>> key_presses_;
-  bool debug_point_reported_ = false;
   int frames_ = 0;
   std::string shown_title_;
   float ui_scale_ = 1;

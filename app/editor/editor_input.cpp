@@ -1,29 +1,34 @@
-// Mouse and keyboard: camera moves, picking, dragging, nudging and the global shortcuts.
+// Keys and mouse: a key press runs the action bound to it; in the view, what lies under the
+// cursor is picked every frame, a left press goes to the active tool (or orbits when the tool
+// leaves it), right and middle drags pan, a right click opens the context menu on what was
+// under the cursor, the wheel zooms.
+#define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
 #include <algorithm>
-#include <cmath>
 
+#include "app/editor/action_menus.hpp"
 #include "app/editor/editor.hpp"
-#include "app/editor/logic/camera_control.hpp"
+#include "app/editor/editor_windows.hpp"
+#include "app/editor/glfw_keys.hpp"
+#include "app/editor/logic/selection_properties.hpp"
 
 namespace pl {
 
-namespace {
-
-// Pixels within which a control point counts as under the cursor.
-constexpr double kPickRadiusPx = 9.0;
-// Mouse-wheel zoom factor per notch.
-constexpr double kWheelZoom = 1.15;
-// A press and release closer than this is a click, not an orbit.
-constexpr float kClickSlopPx = 3.0f;
-
-Box box_of(const DrawScene& d) {
-  return d.bounds();
+std::vector<HelpRow> mouse_help() {
+  return {
+      {"Click", "select a point, curve (edge) or surface (face); Shift adds, Ctrl toggles"},
+      {"Click on empty space", "clear the selection"},
+      {"Drag a point", "move the selected points in the view plane"},
+      {"  ... holding X / Y / Z", "move along that axis"},
+      {"Left-drag elsewhere", "orbit (turntable; about the selection if any)"},
+      {"Right- or middle-drag", "pan"},
+      {"Right-click", "what can be done with the object under the cursor"},
+      {"Wheel", "zoom towards the cursor"},
+      {"Drop a file on the window", "open it (.json, .gbp)"},
+  };
 }
-
-}  // namespace
 
 std::optional<Vec3> Editor::held_axis() const {
   const ImGuiIO& io = ImGui::GetIO();
@@ -35,269 +40,185 @@ std::optional<Vec3> Editor::held_axis() const {
 
 Vec3 Editor::orbit_pivot() const {
   // About the selection when there is one (what the user is working on), else the scene.
-  if (!selection_.empty()) {
-    Vec3 c(0);
-    int n = 0;
-    for (const PointRef& r : selection_)
-      if (point_exists(doc_.scene(), r)) c += point_position(doc_.scene(), r), ++n;
-    if (n) return c / double(n);
+  const Box sel = selection_bounds(session_.doc().scene(), selection_);
+  if (!sel.empty()) return sel.centre();
+  const Box all = scene_box();
+  return all.empty() ? nav_.camera().target : all.centre();
+}
+
+void Editor::nudge_selection(const KeyChord& k) {
+  const std::vector<PointRef> points = selection_.points();
+  if (points.empty() || session_.doc().dragging()) return;
+  // Steps are 1% of the scene size (Shift: 10x, Alt: 0.1x): arrows in the view plane, Page
+  // Up/Down along the view direction.
+  const Camera& c = nav_.camera();
+  const double step =
+      0.01 * std::max(c.scene_radius, 1e-9) * (k.shift ? 10.0 : 1.0) * (k.alt ? 0.1 : 1.0);
+  Vec3 d(0);
+  switch (k.key) {
+    case Key::Left:
+      d = -step * c.right();
+      break;
+    case Key::Right:
+      d = step * c.right();
+      break;
+    case Key::Up:
+      d = step * c.up();
+      break;
+    case Key::Down:
+      d = -step * c.up();
+      break;
+    case Key::PageUp:
+      d = -step * c.forward();
+      break;
+    case Key::PageDown:
+      d = step * c.forward();
+      break;
+    default:
+      return;
   }
-  if (main_view_) {
-    const Box b = box_of(main_view_->shown().draw());
-    if (!b.empty()) return b.centre();
-  }
-  return camera_.target;
-}
-
-void Editor::frame_all() {
-  if (!main_view_) return;
-  const auto rects = panel_rects();
-  camera_.frame(box_of(main_view_->shown().draw()), rects[0].aspect());
-  camera_framed_ = true;
-}
-
-void Editor::frame_selection() {
-  if (selection_.empty()) return frame_all();
-  Box b;
-  for (const PointRef& r : selection_)
-    if (point_exists(doc_.scene(), r)) b.add(point_position(doc_.scene(), r));
-  if (b.empty()) return;
-  const double keep_radius = camera_.scene_radius;  // clipping planes stay sized for the scene
-  Box grown = b;
-  const double r = std::max(b.radius(), 0.08 * keep_radius);
-  grown.add(b.centre() + Vec3(r));
-  grown.add(b.centre() - Vec3(r));
-  camera_.frame(grown, panel_rects()[0].aspect());
-  camera_.scene_radius = std::max(keep_radius, camera_.scene_radius);
-}
-
-void Editor::set_preset(ViewPreset preset) {
-  const bool ortho = camera_.orthographic;
-  if (!main_view_) return;
-  camera_ =
-      preset_camera(preset, box_of(main_view_->shown().draw()), panel_rects()[0].aspect(), ortho);
-}
-
-void Editor::nudge_selection(const Vec3& direction) {
-  if (selection_.empty() || doc_.dragging()) return;
+  const Scene& scene = session_.doc().scene();
   std::vector<Vec3> positions;
-  for (const PointRef& r : selection_)
-    positions.push_back(point_position(doc_.scene(), r) + direction);
-  doc_.execute(std::make_unique<MovePointsCommand>(selection_, positions));
+  for (const PointRef& r : points) positions.push_back(point_position(scene, r) + d);
+  session_.doc().execute(std::make_unique<MovePointsCommand>(points, positions));
 }
 
-void Editor::handle_shortcuts() {
+void Editor::escape() {
+  ToolContext ctx = tool_context();
+  if (tools_.active().capturing() || session_.doc().dragging()) {
+    tools_.active().cancel(ctx);
+    session_.doc().cancel_drag();
+    mouse_.tool_has_it = false;
+  } else if (tools_.active_index() != 0) {
+    tools_.activate(0, ctx);
+  } else {
+    selection_.clear();
+  }
+}
+
+void Editor::handle_keys() {
   const ImGuiIO& io = ImGui::GetIO();
   if (io.WantTextInput || ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId)) return;
   for (const auto& [key, mods] : key_presses_) {
-    const bool ctrl = mods & GLFW_MOD_CONTROL, shift = mods & GLFW_MOD_SHIFT,
-               alt = mods & GLFW_MOD_ALT;
-    if (ctrl) {
-      handle_ctrl_key(key, shift);
-      continue;
-    }
-    if (ImGui::IsAnyItemActive()) continue;  // a slider or field being edited has the keys
-    // Arrow keys nudge the selection in the view plane; Page Up/Down along the view direction.
-    // Steps are 1% of the scene size (Shift: 10x, Alt: 0.1x).
-    const double step =
-        0.01 * std::max(camera_.scene_radius, 1e-9) * (shift ? 10.0 : 1.0) * (alt ? 0.1 : 1.0);
-    switch (key) {
-      case GLFW_KEY_F1:
-        show_help_ = !show_help_;
-        break;
-      case GLFW_KEY_F:
-        shift ? frame_selection() : frame_all();
-        break;
-      case GLFW_KEY_C:
-        if (doc_.scene().network) {
-          compare_ = !compare_;
-          rebuild_views();
-          frame_all();  // the panels' aspect changed
-        }
-        break;
-      case GLFW_KEY_D:
-        if (compare_) difference_ = !difference_;
-        break;
-      case GLFW_KEY_1:
-        set_preset(ViewPreset::Front);
-        break;
-      case GLFW_KEY_3:
-        set_preset(ViewPreset::Right);
-        break;
-      case GLFW_KEY_7:
-        set_preset(ViewPreset::Top);
-        break;
-      case GLFW_KEY_0:
-        set_preset(ViewPreset::Iso);
-        break;
-      case GLFW_KEY_5:
-        camera_.orthographic = !camera_.orthographic;
-        break;
-      case GLFW_KEY_ESCAPE:
-        if (doc_.dragging()) {
-          doc_.cancel_drag();
-          point_drag_ = false;
-        } else {
-          selection_.clear();
-        }
-        break;
-      case GLFW_KEY_LEFT:
-        nudge_selection(-step * camera_.right());
-        break;
-      case GLFW_KEY_RIGHT:
-        nudge_selection(step * camera_.right());
-        break;
-      case GLFW_KEY_UP:
-        nudge_selection(step * camera_.up());
-        break;
-      case GLFW_KEY_DOWN:
-        nudge_selection(-step * camera_.up());
-        break;
-      case GLFW_KEY_PAGE_UP:
-        nudge_selection(-step * camera_.forward());
-        break;
-      case GLFW_KEY_PAGE_DOWN:
-        nudge_selection(step * camera_.forward());
-        break;
-      default:
-        break;
-    }
+    const KeyChord chord = chord_from_glfw(key, mods);
+    if (chord.key == Key::None) continue;
+    // A slider or field being edited keeps the plain keys; Ctrl chords still work.
+    if (!chord.ctrl && ImGui::IsAnyItemActive()) continue;
+    actions_.trigger(chord);
+    // The next key may act on the selection: drop what an undo removed, or all of it for a new
+    // document.
+    if (session_.serial() != session_serial_)
+      after_document_replaced();
+    else
+      selection_.prune(session_.doc().scene());
   }
 }
 
-void Editor::handle_ctrl_key(int key, bool shift) {
-  switch (key) {
-    case GLFW_KEY_Z:
-      shift ? doc_.redo() : doc_.undo();
-      point_drag_ = false;
-      break;
-    case GLFW_KEY_Y:
-      doc_.redo();
-      point_drag_ = false;
-      break;
-    case GLFW_KEY_S:
-      if (shift || doc_.path().empty()) {
-        browse_for_ = BrowseFor::SaveAs;
-        browser_.open("Save scene as", "Save", browse_start_dir(), {".json"}, ".json",
-                      doc_.path().filename().string());
-      } else {
-        save();
-      }
-      break;
-    case GLFW_KEY_O:
-      confirm_discard("open another file", [this] {
-        browse_for_ = BrowseFor::Open;
-        browser_.open("Open scene", "Open", browse_start_dir(), {".json", ".gbp"}, "");
-      });
-      break;
-    case GLFW_KEY_Q:
-      confirm_discard("quit", [this] { quit_ = true; });
-      break;
-    default:
-      break;
-  }
-}
-
-void Editor::begin_point_drag(const ViewRect& rect) {
-  std::vector<PointRef> points;
-  for (const PointRef& r : selection_)
-    if (point_exists(doc_.scene(), r)) points.push_back(r);
-  if (points.empty() || !hover_) return;
-  drag_start_positions_.clear();
-  for (const PointRef& r : points) drag_start_positions_.push_back(point_position(doc_.scene(), r));
-  drag_last_positions_ = drag_start_positions_;
+PointerEvent Editor::pointer_event(const ViewRect& rect, const PickResult* under) const {
   const ImGuiIO& io = ImGui::GetIO();
-  drag_motion_ = {point_position(doc_.scene(), *hover_), Vec2(io.MousePos.x, io.MousePos.y)};
-  drag_rect_ = rect;
-  doc_.begin_drag(points);
-  point_drag_ = true;
+  PointerEvent e;
+  e.pixel = Vec2(io.MousePos.x, io.MousePos.y);
+  e.rect = rect;
+  e.shift = io.KeyShift;
+  e.ctrl = io.KeyCtrl;
+  e.alt = io.KeyAlt;
+  e.axis = held_axis();
+  e.under = under;
+  return e;
 }
 
-void Editor::handle_viewport_mouse() {
+void Editor::handle_mouse() {
   ImGuiIO& io = ImGui::GetIO();
   const Vec2 mouse(io.MousePos.x, io.MousePos.y);
-  const int panel = panel_at(mouse);
-  const auto rects = panel_rects();
+  const EditorLayout l = layout();
+  const auto rects = l.panels(views_.compare());
+  ToolContext ctx = tool_context();
 
-  // A drag in progress owns the mouse until release, wherever the cursor goes.
-  if (point_drag_) {
-    if (!doc_.dragging()) {
-      point_drag_ = false;  // undone or cancelled meanwhile
-      return;
-    }
-    // The cursor's last position counts even when the release arrived in the same frame.
-    const Vec3 d = drag_motion_.offset(camera_, drag_rect_, mouse, held_axis());
-    std::vector<Vec3> positions = drag_start_positions_;
-    for (Vec3& p : positions) p += d;
-    // Only real motion is an edit: each drag_to bumps the document's revision.
-    if (positions != drag_last_positions_) {
-      doc_.drag_to(positions);
-      drag_last_positions_ = positions;
-    }
+  // A tool that took the press owns the mouse until the release, wherever the cursor goes; no
+  // hover or probe meanwhile.
+  if (mouse_.tool_has_it || nav_.gesture() != ViewNavigator::Gesture::None) {
+    mouse_.under = {};
+    mouse_.probe.reset();
+  }
+  if (mouse_.tool_has_it) {
+    const ViewRect& rect = rects[std::clamp(mouse_.pressed_panel, 0, int(rects.size()) - 1)];
+    const PointerEvent e = pointer_event(rect, &mouse_.pressed);
     if (!io.MouseDown[0]) {
-      doc_.end_drag();
-      point_drag_ = false;
+      tools_.active().release(ctx, e);
+      mouse_.tool_has_it = false;
       release_time_ = Clock::now();
-    }
-    return;
-  }
-  if (camera_drag_ != CameraDrag::None) {
-    const Vec2 delta(io.MouseDelta.x, io.MouseDelta.y);
-    if (camera_drag_ == CameraDrag::Orbit)
-      orbit_about(camera_, orbit_pivot_at_press_, -delta.x * kOrbitRadiansPerPixel,
-                  delta.y * kOrbitRadiansPerPixel);
-    else
-      pan_pixels(camera_, rects[0], delta.x, delta.y);
-    if (!io.MouseDown[0] && !io.MouseDown[1] && !io.MouseDown[2]) {
-      // A plain click on empty space (no orbit motion) clears the selection.
-      if (camera_drag_ == CameraDrag::Orbit && clear_on_click_ &&
-          io.MouseDragMaxDistanceSqr[0] < kClickSlopPx * kClickSlopPx)
-        selection_.clear();
-      camera_drag_ = CameraDrag::None;
-    }
-    return;
-  }
-
-  hover_.reset();
-  hover_derived_ = -1;
-  probe_.reset();
-  if (panel < 0 || io.WantCaptureMouse || !main_view_) return;
-  const ViewRect& rect = rects[panel];
-  const EvaluatedView& view = panel_view(panel);
-  const ScenePoints& pts = view.shown().points();
-  if (prefs_.display.control_net) {
-    // Editable points first: a derived point next to a vertex must not block grabbing it.
-    const int i = pick_point(camera_, rect, pts.positions, pts.editable(), mouse, kPickRadiusPx);
-    if (i >= 0)
-      hover_ = pts.refs[i];
-    else
-      hover_derived_ = pick_point(camera_, rect, pts.positions, {}, mouse, kPickRadiusPx);
-  }
-  if (prefs_.show_probe && !hover_) {
-    const auto& meshes = view.shown().draw().surfaces;
-    probe_ = probe_surfaces(meshes, window_ray(camera_, rect, mouse));
-  }
-
-  if (io.MouseWheel != 0)
-    zoom_at(camera_, rect, mouse, std::pow(kWheelZoom, static_cast<double>(io.MouseWheel)));
-
-  if (ImGui::IsMouseClicked(0)) {
-    if (hover_ && !io.KeyAlt) {
-      const bool selected =
-          std::find(selection_.begin(), selection_.end(), *hover_) != selection_.end();
-      if (io.KeyShift) {
-        if (!selected) selection_.push_back(*hover_);
-      } else if (!selected) {
-        selection_ = {*hover_};
-      }
-      begin_point_drag(rect);
     } else {
-      clear_on_click_ = !io.KeyShift && !io.KeyAlt;
-      camera_drag_ = CameraDrag::Orbit;
-      orbit_pivot_at_press_ = orbit_pivot();
+      tools_.active().drag(ctx, e);
     }
-  } else if (ImGui::IsMouseClicked(1) || ImGui::IsMouseClicked(2)) {
-    camera_drag_ = CameraDrag::Pan;
+    return;
+  }
+  // So does a camera gesture; a press and release without motion is a click.
+  if (nav_.gesture() != ViewNavigator::Gesture::None) {
+    const ViewRect& rect = rects[std::clamp(mouse_.pressed_panel, 0, int(rects.size()) - 1)];
+    nav_.move(mouse, rect);
+    if (!io.MouseDown[0] && !io.MouseDown[1] && !io.MouseDown[2]) {
+      const bool was_orbit = nav_.gesture() == ViewNavigator::Gesture::Orbit;
+      if (nav_.end()) {
+        if (was_orbit) {
+          tools_.active().click(ctx, pointer_event(rect, &mouse_.pressed));
+        } else if (mouse_.context_press) {
+          // Right-click: the menu acts on the selection, so an unselected object under the
+          // cursor becomes the selection first (a selected one keeps the selection as it is).
+          const auto& item = mouse_.pressed.item;
+          if (item && !selection_.contains(*item)) selection_.set({*item});
+          context_ = !item                                      ? ContextTarget::Empty
+                     : item->kind == SelectionItem::Kind::Edge  ? ContextTarget::Edge
+                     : item->kind == SelectionItem::Kind::Face  ? ContextTarget::Face
+                     : item->kind == SelectionItem::Kind::Patch ? ContextTarget::Patch
+                                                                : ContextTarget::Point;
+          open_context_menu();
+          debug_.menu_frames = 0;
+        }
+      }
+      mouse_.context_press = false;
+    }
+    return;
+  }
+
+  mouse_.panel = l.panel_at(mouse, views_.compare());
+  mouse_.under = {};
+  mouse_.probe.reset();
+  if (mouse_.panel < 0 || io.WantCaptureMouse || !views_.ready()) {
+    mouse_.panel = -1;
+    return;
+  }
+  const ViewRect& rect = rects[mouse_.panel];
+  std::vector<SelectionItem> items;
+  const PickScene scene = pick_scene(mouse_.panel, items);
+  const DisplaySettings& d = prefs_.display;
+  mouse_.under = pickers_[mouse_.panel].pick(scene, nav_.camera(), rect, mouse,
+                                             {d.control_net, d.network_curves});
+  if (prefs_.show_probe && mouse_.under.point < 0 && mouse_.under.surface) {
+    const SurfaceHit& h = *mouse_.under.surface;
+    mouse_.probe =
+        probe_at(scene.meshes[h.surface], h.surface, h.hit, window_ray(nav_.camera(), rect, mouse));
+  }
+
+  nav_.wheel(rect, mouse, io.MouseWheel);
+
+  const bool left = ImGui::IsMouseClicked(0), right = ImGui::IsMouseClicked(1),
+             middle = ImGui::IsMouseClicked(2);
+  if (!left && !right && !middle) return;
+  mouse_.pressed = mouse_.under;
+  mouse_.pressed_panel = mouse_.panel;
+  mouse_.pressed_point.reset();
+  if (mouse_.under.point >= 0)
+    mouse_.pressed_point = scene.points->positions[mouse_.under.point];
+  else if (mouse_.under.surface)
+    mouse_.pressed_point = mouse_.under.surface->position;
+  if (left) {
+    if (tools_.active().press(ctx, pointer_event(rect, &mouse_.pressed)))
+      mouse_.tool_has_it = true;
+    else
+      nav_.begin(ViewNavigator::Gesture::Orbit, mouse, orbit_pivot());
+  } else {
+    nav_.begin(ViewNavigator::Gesture::Pan, mouse, Vec3(0));
+    mouse_.context_press = right;
   }
 }
 

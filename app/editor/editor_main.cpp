@@ -5,11 +5,11 @@
 #include <charconv>
 #include <cstdlib>
 
-#include "app/cli/load_input.hpp"
 #include "app/editor/editor.hpp"
 #include "app/editor/logic/editor_paths.hpp"
 #include "app/editor/logic/grid_scene.hpp"
-#include "app/editor/logic/point_names.hpp"
+#include "app/editor/logic/selection.hpp"
+#include "app/editor/pick_benchmark.hpp"
 #include "core/base/data_error.hpp"
 
 namespace pl {
@@ -52,7 +52,6 @@ void ensure_passive_openmp(std::span<const std::string> args) {
 }  // namespace
 
 int run_editor(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
-  (void)out;
   ensure_passive_openmp(args);
   EditorOptions o;
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -60,13 +59,17 @@ int run_editor(std::span<const std::string> args, std::ostream& out, std::ostrea
     auto value = [&]() -> const std::string* { return i + 1 < args.size() ? &args[++i] : nullptr; };
     if (a == "--bench-drag") {
       o.bench_drag = true;
+    } else if (a == "--bench-pick") {
+      o.bench_pick = true;
     } else if (a == "--debug-point") {
       const std::string* v = value();
-      o.debug_point = v ? parse_point_name(*v) : std::nullopt;
-      if (!o.debug_point) {
-        err << "patchlab: --debug-point takes a point name such as \"vertex 2\"\n";
+      const auto item = v ? parse_item_name(*v) : std::nullopt;
+      if (!item) {
+        err << "patchlab: --debug-point takes a name such as \"vertex 2\", \"face 1\" or "
+               "\"edge 3\"\n";
         return 2;
       }
+      o.debug_items.push_back(*item);
     } else if (a == "--compare") {
       o.compare = true;
     } else if (a == "--screenshot") {
@@ -85,8 +88,7 @@ int run_editor(std::span<const std::string> args, std::ostream& out, std::ostrea
     } else if (a.rfind("--", 0) == 0) {
       err << "patchlab: unknown editor option " << a << "\n"
           << "usage: patchlab [FILE] [--size WxH] [--compare] [--screenshot OUT.png] "
-             "[--bench-drag] "
-             "[--debug-point NAME]\n";
+             "[--bench-drag] [--bench-pick] [--debug-point NAME]...\n";
       return 2;
     } else if (!o.file) {
       o.file = a;
@@ -97,23 +99,23 @@ int run_editor(std::span<const std::string> args, std::ostream& out, std::ostrea
   }
   if (o.bench_drag && !args.empty() && args.size() <= 2) o.width = 1280, o.height = 720;
 
-  // Load before opening a window, so a bad file is reported like the CLI does.
-  Scene scene;
-  fs::path path;
+  if (o.bench_pick) return run_pick_benchmark(o.file, out, err);
+
+  // Load before opening a window, so a bad file is reported like the CLI does. The default
+  // scene and the other shipped samples open as untitled copies: Save asks for a path.
+  DocumentSession session(shipped_scene_dirs(executable_path()));
   try {
     if (o.file) {
-      scene = load_input(*o.file);
-      if (o.file->extension() == ".json") path = *o.file;
+      session.open(*o.file);
     } else if (o.bench_drag) {
-      scene = make_grid_network_scene(2, 2);
+      session.replace(Document(make_grid_network_scene(2, 2)));
     } else {
       const auto def = default_scene_path(executable_path());
       if (!def) {
         err << "patchlab: cannot find assets/default.json next to the executable\n";
         return 1;
       }
-      scene = load_input(*def);
-      path = *def;
+      session.open(*def);
     }
   } catch (const DataError& e) {
     err << "patchlab: " << e.what() << "\n";
@@ -129,13 +131,12 @@ int run_editor(std::span<const std::string> args, std::ostream& out, std::ostrea
     }
   try {
     GlWindow window(o.width, o.height, "PatchLab", ini.value_or(fs::path()));
-    Editor editor(window, o);
-    editor.load(Document(std::move(scene), path));
+    Editor editor(window, o, std::move(session));
     return o.bench_drag ? editor.run_drag_benchmark() : editor.run();
   } catch (const WindowError& e) {
     err << "patchlab: " << e.what() << "\n";
     return 1;
-  } catch (const std::runtime_error& e) {
+  } catch (const std::exception& e) {
     err << "patchlab: " << e.what() << "\n";
     return 1;
   }

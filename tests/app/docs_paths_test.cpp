@@ -42,7 +42,9 @@ TEST(DocsPaths, EveryPathTheDocumentsNameExists) {
   for (const auto& doc : documents()) {
     const std::string text = slurp(doc);
     ASSERT_FALSE(text.empty()) << doc;
-    EXPECT_EQ(text.find("../shared"), std::string::npos) << doc << " points outside the repository";
+    // A path that leaves the repository (written in two pieces, so this file does not name it).
+    EXPECT_EQ(text.find(std::string("..") + "/shared"), std::string::npos)
+        << doc << " points outside the repository";
     for (const std::string& p : named_paths(text)) {
       ++checked;
       EXPECT_TRUE(std::filesystem::exists(kRoot / p)) << doc.filename() << " names " << p;

@@ -7,12 +7,9 @@
 set -euo pipefail
 bin=$1
 src=$2
-for tool in xvfb-run xdotool python3; do
-  command -v "$tool" > /dev/null || { echo "SKIP: $tool not installed"; exit 77; }
-done
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-mkdir -p "$tmp/cwd" "$tmp/config" "$tmp/state"
+lib=$(cd "$(dirname "$0")" && pwd)/editor_e2e_lib.sh
+source "$lib"
+e2e_prepare
 cp "$src/assets/default.json" "$tmp/scene.json"
 cp "$src/assets/default.json" "$tmp/original.json"
 
@@ -20,28 +17,13 @@ cp "$src/assets/default.json" "$tmp/original.json"
 cat > "$tmp/drive.sh" <<'INNER'
 set -euo pipefail
 tmp=$1 bin=$2
-log=$tmp/editor.log
-cd "$tmp/cwd"
-XDG_CONFIG_HOME=$tmp/config XDG_STATE_HOME=$tmp/state \
-  "$bin" "$tmp/scene.json" --size 1200x760 --debug-point "vertex 2" > "$log" 2> "$tmp/editor.err" &
-pid=$!
-# Polls until `pattern` appears `count` times in the log (20 s at most).
-wait_for() {
-  local pattern=$1 count=$2
-  for _ in $(seq 200); do
-    [ "$(grep -c "$pattern" "$log" || true)" -ge "$count" ] && return 0
-    kill -0 $pid 2> /dev/null || { echo "editor exited early"; cat "$tmp/editor.err"; exit 1; }
-    sleep 0.1
-  done
-  echo "timed out waiting for '$pattern' x$count"; cat "$log" "$tmp/editor.err"; exit 1
-}
+source "$3"
+e2e_start "$bin" "$tmp/scene.json" --size 1200x760 --debug-point "vertex 2"
 wait_for '^debug-point' 1
 read -r _ px py _ wx wy _ < <(grep '^debug-point' "$log")
 x=$(( wx + ${px%.*} )); y=$(( wy + ${py%.*} ))
 win=$(xdotool search --sync --pid $pid | head -1)
 xdotool windowfocus --sync "$win" 2> /dev/null || true
-# ImGui 1.86 samples the mouse once a frame: give every event a frame of its own.
-step() { "$@"; sleep 0.15; }
 step xdotool mousemove $x $y
 step xdotool mousedown 1
 for dx in 10 20 30 40; do step xdotool mousemove $((x + dx)) $y; done
@@ -58,16 +40,12 @@ step xdotool key ctrl+y
 step xdotool key ctrl+s
 wait_for '^saved' 3
 cp "$tmp/scene.json" "$tmp/after_redo.json"
-xdotool key ctrl+q
-for _ in $(seq 100); do kill -0 $pid 2> /dev/null || break; sleep 0.1; done
-if kill -0 $pid 2> /dev/null; then echo "editor did not quit"; kill $pid; exit 1; fi
+e2e_quit
 INNER
 
 SECONDS=0
-xvfb-run -a -s "-screen 0 1280x800x24" bash "$tmp/drive.sh" "$tmp" "$bin"
-if [ -n "$(ls -A "$tmp/cwd")" ]; then
-  echo "FAIL: the editor wrote into the working directory:"; ls -A "$tmp/cwd"; exit 1
-fi
+xvfb-run -a -s "-screen 0 1280x800x24" bash "$tmp/drive.sh" "$tmp" "$bin" "$lib"
+e2e_check_cwd
 [ -f "$tmp/state/patchlab/imgui.ini" ] || { echo "FAIL: no imgui.ini under XDG_STATE_HOME"; exit 1; }
 "$bin" analyze "$tmp/after_redo.json" > /dev/null || { echo "FAIL: saved file is invalid"; exit 1; }
 python3 "$(dirname "$0")/editor_e2e_check.py" "$tmp/editor.log" "$tmp/drag.txt" "$tmp/original.json" \

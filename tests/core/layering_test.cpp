@@ -1,6 +1,7 @@
 // The dependency rules of the code (docs/developing.md): core/ knows no GL, GLFW, ImGui, render/
-// or app/; render/ knows no GLFW, ImGui or app/; and inside core/ every folder stands on a floor
-// and includes only folders on lower floors (or its own): no include runs up or sideways.
+// or app/; render/ knows no GLFW, ImGui or app/; the editor's logic (app/editor/logic) knows no
+// window, UI or GL; and inside core/ every folder stands on a floor and includes only folders on
+// lower floors (or its own): no include runs up or sideways.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -111,6 +112,17 @@ TEST(Layering, CoreIncludesNoGraphicsUiRenderOrApp) {
 
 TEST(Layering, RenderIncludesNoWindowUiOrApp) {
   const auto bad = offending("render", {"GLFW/", "imgui", "backends/", "app/"});
+  EXPECT_TRUE(bad.empty()) << bad.front();
+}
+
+TEST(Layering, EditorLogicIncludesNoWindowUiOrGl) {
+  // The editor's logic is GUI-free: it may use the renderer's plain data (cameras, draw scenes,
+  // display settings) but nothing that needs a window or a GL context.
+  const auto bad = offending(
+      "app/editor/logic",
+      {"GL/", "GLES", "GLFW/", "EGL/", "KHR/", "epoxy/", "imgui", "backends/", "render/gl",
+       "render/gpu_scene", "render/scene_renderer", "render/egl_context", "render/offscreen_target",
+       "render/frame", "app/editor/evaluated_view", "app/editor/gl_window"});
   EXPECT_TRUE(bad.empty()) << bad.front();
 }
 

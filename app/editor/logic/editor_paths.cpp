@@ -1,5 +1,6 @@
 #include "app/editor/logic/editor_paths.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <system_error>
 
@@ -25,12 +26,11 @@ std::optional<fs::path> state_dir() {
   return xdg_dir(std::getenv("XDG_STATE_HOME"), std::getenv("HOME"), ".local/state");
 }
 
-std::optional<fs::path> default_scene_path(const fs::path& executable) {
+namespace {
+
+// The nearest assets/default.json above the executable's directory (a moved build tree).
+std::optional<fs::path> default_scene_above(const fs::path& executable) {
   std::error_code ec;
-#ifdef PATCHLAB_ASSETS_DIR
-  const fs::path built = fs::path(PATCHLAB_ASSETS_DIR) / "default.json";
-  if (fs::is_regular_file(built, ec)) return built;
-#endif
   if (executable.empty()) return std::nullopt;
   for (fs::path dir = executable.parent_path(); !dir.empty(); dir = dir.parent_path()) {
     const fs::path candidate = dir / "assets" / "default.json";
@@ -38,6 +38,29 @@ std::optional<fs::path> default_scene_path(const fs::path& executable) {
     if (dir == dir.parent_path()) break;
   }
   return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<fs::path> default_scene_path(const fs::path& executable) {
+#ifdef PATCHLAB_ASSETS_DIR
+  std::error_code ec;
+  const fs::path built = fs::path(PATCHLAB_ASSETS_DIR) / "default.json";
+  if (fs::is_regular_file(built, ec)) return built;
+#endif
+  return default_scene_above(executable);
+}
+
+std::vector<fs::path> shipped_scene_dirs(const fs::path& executable) {
+  std::vector<fs::path> dirs;
+#ifdef PATCHLAB_ASSETS_DIR
+  dirs.emplace_back(PATCHLAB_ASSETS_DIR);
+#endif
+  if (const auto found = default_scene_above(executable)) {
+    const fs::path dir = found->parent_path();
+    if (std::find(dirs.begin(), dirs.end(), dir) == dirs.end()) dirs.push_back(dir);
+  }
+  return dirs;
 }
 
 fs::path executable_path() {

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace pl {
 
@@ -21,6 +22,11 @@ std::optional<std::filesystem::path> state_dir();
 // assets/default.json: next to the sources this binary was built from, else found by walking up
 // from the executable's directory (a moved build tree). nullopt when neither exists.
 std::optional<std::filesystem::path> default_scene_path(const std::filesystem::path& executable);
+
+// The folders holding the scenes shipped with PatchLab (the sources' assets folder, and the one
+// found from the executable when it differs): the editor opens their scenes as untitled copies
+// and never writes into them. The build installs nothing, so there is no other copy.
+std::vector<std::filesystem::path> shipped_scene_dirs(const std::filesystem::path& executable);
 
 // The running executable (/proc/self/exe), or empty when unknown.
 std::filesystem::path executable_path();

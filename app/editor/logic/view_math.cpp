@@ -10,11 +10,18 @@ namespace {
 constexpr double kSamePixel = 0.5;
 }  // namespace
 
-std::optional<Vec2> project_to_window(const Camera& c, const ViewRect& r, const Vec3& p) {
-  const glm::dvec4 clip = c.projection(r.aspect()) * c.view() * glm::dvec4(p, 1.0);
+WindowProjector::WindowProjector(const Camera& c, const ViewRect& r)
+    : view_projection_(c.projection(r.aspect()) * c.view()), rect_(r) {}
+
+std::optional<Vec2> WindowProjector::operator()(const Vec3& p) const {
+  const glm::dvec4 clip = view_projection_ * glm::dvec4(p, 1.0);
   if (clip.w <= 0) return std::nullopt;
   const double nx = clip.x / clip.w, ny = clip.y / clip.w;
-  return Vec2(r.x + (nx + 1) * 0.5 * r.width, r.y + (1 - ny) * 0.5 * r.height);
+  return Vec2(rect_.x + (nx + 1) * 0.5 * rect_.width, rect_.y + (1 - ny) * 0.5 * rect_.height);
+}
+
+std::optional<Vec2> project_to_window(const Camera& c, const ViewRect& r, const Vec3& p) {
+  return WindowProjector(c, r)(p);
 }
 
 Ray window_ray(const Camera& c, const ViewRect& r, const Vec2& pixel) {
@@ -32,29 +39,27 @@ Ray window_ray(const Camera& c, const ViewRect& r, const Vec2& pixel) {
   return {eye, glm::normalize(on_target_plane - eye)};
 }
 
+void NearestPoint::offer(int i, double d, double z) {
+  if (d < distance - kSamePixel || (d <= distance + kSamePixel && z < depth)) {
+    index = i;
+    distance = d;
+    depth = z;
+  }
+}
+
 int pick_point(const Camera& c, const ViewRect& r, std::span<const Vec3> points,
                const std::vector<bool>& pickable, const Vec2& pixel, double radius) {
-  int best = -1;
-  double best_depth = std::numeric_limits<double>::infinity();
-  double best_d2 = std::numeric_limits<double>::infinity();
+  NearestPoint best;
   const Vec3 eye = c.eye(), f = c.forward();
+  const WindowProjector project(c, r);
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!pickable.empty() && !pickable[i]) continue;
-    const auto s = project_to_window(c, r, points[i]);
+    const auto s = project(points[i]);
     if (!s) continue;
-    const double d2 = glm::dot(*s - pixel, *s - pixel);
-    if (d2 > radius * radius) continue;
-    const double depth = glm::dot(points[i] - eye, f);
-    // The point drawn nearest to the cursor wins; points on (nearly) the same pixel are told
-    // apart by depth, nearest to the eye first (the one drawn on top).
-    const double d = std::sqrt(d2), best_d = std::sqrt(best_d2);
-    if (d < best_d - kSamePixel || (d <= best_d + kSamePixel && depth < best_depth)) {
-      best = static_cast<int>(i);
-      best_depth = depth;
-      best_d2 = d2;
-    }
+    const double d = glm::length(*s - pixel);
+    if (d <= radius) best.offer(static_cast<int>(i), d, glm::dot(points[i] - eye, f));
   }
-  return best;
+  return best.index;
 }
 
 std::optional<Vec3> intersect_plane(const Ray& ray, const Vec3& point, const Vec3& normal) {

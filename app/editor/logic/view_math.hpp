@@ -24,11 +24,30 @@ struct Ray {
   Vec3 origin, direction;  // direction unit
 };
 
-// Window pixel of p and its depth along the view direction; nullopt behind the eye.
+// Window pixel of p; nullopt behind the eye.
 std::optional<Vec2> project_to_window(const Camera& camera, const ViewRect& rect, const Vec3& p);
+
+// project_to_window for many points: the camera's matrices are formed once.
+class WindowProjector {
+ public:
+  WindowProjector(const Camera& camera, const ViewRect& rect);
+  std::optional<Vec2> operator()(const Vec3& p) const;
+
+ private:
+  glm::dmat4 view_projection_;
+  ViewRect rect_;
+};
 
 // The ray through a window pixel (perspective: from the eye; orthographic: parallel).
 Ray window_ray(const Camera& camera, const ViewRect& rect, const Vec2& pixel);
+
+// The best of the points offered for picking: nearest on screen; points on (nearly) the same
+// pixel are told apart by depth, nearest to the eye first (the one drawn on top).
+struct NearestPoint {
+  int index = -1;
+  double distance = 1e300, depth = 1e300;  // pixels from the cursor; along the view
+  void offer(int i, double d, double z);
+};
 
 // Index of the point nearest to `pixel` within `radius` pixels; among points on the same spot,
 // the one nearest the eye. `pickable[i]` false skips a point (empty span:

@@ -1,0 +1,214 @@
+// The editor's action table: every command with its menu place, keys and help, bound to the
+// parts that carry it out. The menu bar, the context menu, the keys and F1 are drawn from it;
+// an authoring command is one more entry here (or in a GUI-free add_*_actions function).
+#include <algorithm>
+
+#include "app/editor/editor.hpp"
+#include "app/editor/logic/selection_actions.hpp"
+#include "app/editor/logic/selection_properties.hpp"
+
+namespace pl {
+
+namespace {
+
+constexpr ContextSet kOnObjects =
+    context_bit(ContextTarget::Point) | context_bit(ContextTarget::Edge) |
+    context_bit(ContextTarget::Face) | context_bit(ContextTarget::Patch);
+
+}  // namespace
+
+void Editor::register_actions() {
+  ActionRegistry& r = actions_;
+  auto has_selection = [this] { return !selection_.empty(); };
+  auto aspect = [this] { return layout().panels(views_.compare())[0].aspect(); };
+
+  // File
+  r.add(make_action("file.new", "File", "New", {"Ctrl+N"}, "new empty scene", [this] {
+    dialogs_.confirm_discard("start a new scene", [this] { new_scene(); });
+  }));
+  r.add(make_action("file.open", "File", "Open...", {"Ctrl+O"},
+                    "open a scene (.json) or GB patch (.gbp)", [this] {
+                      dialogs_.confirm_discard("open another file", [this] {
+                        dialogs_.browse(FileDialogs::Purpose::Open, browse_start_dir());
+                      });
+                    }));
+  r.add(make_action("file.save", "File", "Save", {"Ctrl+S"}, "save (asks for a name when untitled)",
+                    [this] { save(); }));
+  r.add(make_action("file.save_as", "File", "Save As...", {"Ctrl+Shift+S"}, "save under a new name",
+                    [this] {
+                      dialogs_.browse(FileDialogs::Purpose::SaveAs, browse_start_dir(),
+                                      session_.doc().path().filename().string());
+                    }));
+  Action exporting =
+      make_action("file.export", "File", "Export Mesh...", {},
+                  "the fine surfaces as OBJ, PLY, OFF or STL", [this] {
+                    dialogs_.browse(FileDialogs::Purpose::ExportMesh, browse_start_dir(),
+                                    session_.doc().path().stem().string() + ".obj");
+                  });
+  exporting.separator_before = true;
+  exporting.enabled = [this] { return views_.ready(); };
+  r.add(std::move(exporting));
+  r.add(make_action("file.screenshot", "File", "Screenshot...", {}, "render the view to a PNG",
+                    [this] { dialogs_.show_screenshot_options(); }));
+  Action quit = make_action("file.quit", "File", "Quit", {"Ctrl+Q"}, "quit",
+                            [this] { dialogs_.confirm_discard("quit", [this] { quit_ = true; }); });
+  quit.separator_before = true;
+  r.add(std::move(quit));
+
+  // Edit
+  Action undo = make_action("edit.undo", "Edit", "Undo", {"Ctrl+Z"}, "undo", [this] {
+    ToolContext ctx = tool_context();
+    tools_.active().cancel(ctx);
+    session_.doc().undo();
+  });
+  undo.detail = [this] { return session_.doc().undo_label(); };
+  undo.enabled = [this] { return session_.doc().can_undo() || session_.doc().dragging(); };
+  r.add(std::move(undo));
+  Action redo =
+      make_action("edit.redo", "Edit", "Redo", {"Ctrl+Shift+Z", "Ctrl+Y"}, "redo", [this] {
+        ToolContext ctx = tool_context();
+        tools_.active().cancel(ctx);
+        session_.doc().redo();
+      });
+  redo.detail = [this] { return session_.doc().redo_label(); };
+  redo.enabled = [this] { return session_.doc().can_redo(); };
+  r.add(std::move(redo));
+  Action esc = make_action("edit.escape", "Edit", "Cancel / Clear Selection", {"Esc"},
+                           "cancel a drag, else back to the Select tool, else clear the selection",
+                           [this] { escape(); });
+  esc.separator_before = true;
+  r.add(std::move(esc));
+  // One action for every arrow: the key that triggered it says which way and how far.
+  std::vector<std::string> arrows;
+  for (const char* mod : {"", "Shift+", "Alt+"})
+    for (const char* key : {"Left", "Right", "Up", "Down", "PgUp", "PgDn"})
+      arrows.push_back(std::string(mod) + key);
+  Action nudge = make_action(
+      "edit.nudge", "", "Nudge", arrows,
+      "nudge the selected points in the view plane / along the view (Shift x10, Alt x0.1)",
+      nullptr);
+  nudge.run = [this](const std::optional<KeyChord>& k) {
+    if (k) nudge_selection(*k);
+  };
+  nudge.keys_text = "Arrows, PgUp/PgDn";
+  nudge.enabled = [this] { return !selection_.points().empty(); };
+  r.add(std::move(nudge));
+
+  // Select and Face (GUI-free, shared with the tests)
+  add_selection_actions(r, session_.doc(), selection_);
+
+  // View
+  Action all = make_action("view.frame_all", "View", "Frame All", {"F"}, "frame all",
+                           [this, aspect] { nav_.frame(scene_box(), aspect()); });
+  all.context = context_bit(ContextTarget::Empty);
+  r.add(std::move(all));
+  Action sel =
+      make_action("view.frame_selection", "View", "Frame Selection", {"Shift+F"},
+                  "frame the selection", [this, aspect] {
+                    const Box b = selection_bounds(session_.doc().scene(), selection_);
+                    b.empty() ? nav_.frame(scene_box(), aspect()) : nav_.frame_closely(b, aspect());
+                  });
+  sel.enabled = has_selection;
+  sel.context = kOnObjects;
+  r.add(std::move(sel));
+  const std::pair<const char*, ViewPreset> presets[] = {{"Front", ViewPreset::Front},
+                                                        {"Right", ViewPreset::Right},
+                                                        {"Top", ViewPreset::Top},
+                                                        {"Iso", ViewPreset::Iso}};
+  const char* preset_keys[] = {"1", "3", "7", "0"};
+  for (int i = 0; i < 4; ++i) {
+    const ViewPreset p = presets[i].second;
+    std::string id = std::string("view.") + presets[i].first;
+    std::transform(id.begin(), id.end(), id.begin(), ::tolower);
+    Action a = make_action(id, "View", presets[i].first, {preset_keys[i]},
+                           std::string(presets[i].first) + " view",
+                           [this, p, aspect] { nav_.preset(p, scene_box(), aspect()); });
+    a.separator_before = i == 0;
+    r.add(std::move(a));
+  }
+  Action ortho =
+      make_action("view.orthographic", "View", "Orthographic", {"5"}, "orthographic on/off",
+                  [this] { nav_.camera().orthographic = !nav_.camera().orthographic; });
+  ortho.checked = [this] { return nav_.camera().orthographic; };
+  r.add(std::move(ortho));
+  Action compare =
+      make_action("view.compare", "View", "Compare Gregory | GB", {"C"},
+                  "compare Gregory | GB side by side", [this] { set_compare(!views_.compare()); });
+  compare.separator_before = true;
+  compare.checked = [this] { return views_.compare(); };
+  compare.enabled = [this] { return session_.doc().scene().network.has_value(); };
+  r.add(std::move(compare));
+  Action difference = make_action("view.difference", "View", "Difference Colouring", {"D"},
+                                  "colour GB by its distance to Gregory (comparison)",
+                                  [this] { views_.difference = !views_.difference; });
+  difference.checked = [this] { return views_.difference; };
+  difference.enabled = [this] { return views_.compare(); };
+  r.add(std::move(difference));
+  Action probe = make_action("view.probe", "View", "Probe Under Cursor", {}, "",
+                             [this] { prefs_.show_probe = !prefs_.show_probe; });
+  probe.checked = [this] { return prefs_.show_probe; };
+  r.add(std::move(probe));
+
+  // Work plane
+  Action grid =
+      make_action("plane.grid", "View/Work Plane", "Show Grid", {"G"}, "work-plane grid on/off",
+                  [this] { work_plane_.shown = !work_plane_.shown; });
+  grid.checked = [this] { return work_plane_.shown; };
+  grid.context = context_bit(ContextTarget::Empty);
+  r.add(std::move(grid));
+  for (WorkPlaneKind k :
+       {WorkPlaneKind::View, WorkPlaneKind::XY, WorkPlaneKind::XZ, WorkPlaneKind::YZ}) {
+    std::string id = std::string("plane.") + work_plane_name(k);
+    std::transform(id.begin(), id.end(), id.begin(), ::tolower);
+    Action a = make_action(id, "View/Work Plane", std::string(work_plane_name(k)) + " Plane", {},
+                           "", [this, k] {
+                             work_plane_.kind = k;
+                             work_plane_.shown = true;
+                           });
+    a.separator_before = k == WorkPlaneKind::View;
+    a.checked = [this, k] { return work_plane_.kind == k; };
+    r.add(std::move(a));
+  }
+  Action here = make_action("plane.at_cursor", "View/Work Plane", "Through the Point Clicked", {},
+                            "the work plane through the point right-clicked", [this] {
+                              if (mouse_.pressed_point) work_plane_.origin = *mouse_.pressed_point;
+                              work_plane_.shown = true;
+                            });
+  here.separator_before = true;
+  here.enabled = [this] { return mouse_.pressed_point.has_value(); };
+  here.context = kOnObjects;
+  r.add(std::move(here));
+  Action at_sel = make_action("plane.at_selection", "View/Work Plane", "Through the Selection", {},
+                              "the work plane through the centre of the selection", [this] {
+                                const Box b = selection_bounds(session_.doc().scene(), selection_);
+                                if (!b.empty()) work_plane_.origin = b.centre();
+                                work_plane_.shown = true;
+                              });
+  at_sel.enabled = has_selection;
+  r.add(std::move(at_sel));
+  r.add(make_action("plane.at_origin", "View/Work Plane", "Through the Origin", {}, "",
+                    [this] { work_plane_.origin = Vec3(0); }));
+
+  // Tools: one entry per tool of the tool box, checked while active.
+  for (std::size_t i = 0; i < tools_.size(); ++i) {
+    const Tool& tool = tools_.tool(i);
+    std::string id = "tool." + tool.name();
+    std::transform(id.begin(), id.end(), id.begin(), ::tolower);
+    std::vector<std::string> keys;
+    if (!tool.shortcut().empty()) keys.push_back(tool.shortcut());
+    Action a = make_action(id, "Tools", tool.name(), keys, tool.hint(), [this, i] {
+      ToolContext ctx = tool_context();
+      tools_.activate(i, ctx);
+    });
+    a.checked = [this, i] { return tools_.active_index() == i; };
+    r.add(std::move(a));
+  }
+
+  // Help
+  Action help = make_action("help.keys", "Help", "Mouse and Keys", {"F1"}, "this list",
+                            [this] { show_help_ = !show_help_; });
+  help.checked = [this] { return show_help_; };
+  r.add(std::move(help));
+}
+
+}  // namespace pl

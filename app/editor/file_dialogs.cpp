@@ -1,0 +1,148 @@
+#include "app/editor/file_dialogs.hpp"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <iostream>
+
+namespace pl {
+
+void FileDialogs::browse(Purpose purpose, const std::filesystem::path& dir,
+                         const std::string& name) {
+  purpose_ = purpose;
+  switch (purpose) {
+    case Purpose::Open:
+      browser_.open("Open scene", "Open", dir, {".json", ".gbp"}, "");
+      break;
+    case Purpose::SaveAs:
+      browser_.open("Save scene as", "Save", dir, {".json"}, ".json", name);
+      break;
+    case Purpose::ExportMesh:
+      browser_.open("Export mesh", "Export", dir, {".obj", ".ply", ".off", ".stl"}, ".obj", name);
+      break;
+    case Purpose::Screenshot:
+      browser_.open("Save screenshot", "Save", dir, {".png"}, ".png", name);
+      break;
+  }
+}
+
+void FileDialogs::show_error(const std::string& title, const std::string& message) {
+  error_title_ = title;
+  error_message_ = message;
+  error_request_ = true;
+  after_save_ = nullptr;  // whatever waited for a save does not happen
+  std::cerr << "patchlab: " << message << "\n";
+}
+
+void FileDialogs::confirm_discard(const std::string& what, std::function<void()> action) {
+  if (!handlers_.dirty()) {
+    action();
+    return;
+  }
+  confirm_what_ = what;
+  confirm_action_ = std::move(action);
+  confirm_request_ = true;
+}
+
+void FileDialogs::saved() {
+  if (after_save_ && !handlers_.dirty()) {
+    auto action = std::move(after_save_);
+    after_save_ = nullptr;
+    action();
+  }
+}
+
+void FileDialogs::draw(Preferences& prefs, float s, bool compare, const std::string& stem) {
+  if (const auto chosen = browser_.draw()) {
+    prefs.last_directory = browser_.directory().string();
+    switch (purpose_) {
+      case Purpose::Open:
+        handlers_.open(*chosen);
+        break;
+      case Purpose::SaveAs:
+        handlers_.save_as(*chosen);
+        saved();
+        break;
+      case Purpose::ExportMesh:
+        handlers_.export_mesh(*chosen);
+        break;
+      case Purpose::Screenshot:
+        handlers_.screenshot(*chosen);
+        break;
+    }
+  }
+
+  if (screenshot_request_) {
+    ImGui::OpenPopup("Screenshot");
+    screenshot_request_ = false;
+  }
+  if (ImGui::BeginPopupModal("Screenshot", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::TextDisabled("Rendered offscreen; the interface is not included.");
+    int size[2] = {prefs.screenshot_width, prefs.screenshot_height};
+    if (ImGui::InputInt2("Size (px)", size)) {
+      prefs.screenshot_width = std::clamp(size[0], 16, 8192);
+      prefs.screenshot_height = std::clamp(size[1], 16, 8192);
+    }
+    ImGui::Checkbox("Transparent background", &prefs.screenshot_transparent);
+    ImGui::Text(compare ? "Both panels of the comparison." : "The current view.");
+    if (ImGui::Button("Choose file...", ImVec2(140 * s, 0))) {
+      ImGui::CloseCurrentPopup();
+      browse(Purpose::Screenshot, handlers_.start_dir(), stem + ".png");
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel", ImVec2(100 * s, 0))) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+  }
+
+  if (error_request_) {
+    ImGui::OpenPopup("Problem###error");
+    error_request_ = false;
+  }
+  if (ImGui::BeginPopupModal("Problem###error", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.5f, 1), "%s", error_title_.c_str());
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40);
+    ImGui::TextUnformatted(error_message_.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::TextDisabled("Nothing was changed.");
+    // Keys count only after the first frame: the Enter that confirmed a file dialog is still
+    // "pressed" in the frame this modal opens.
+    const bool keys = !ImGui::IsWindowAppearing();
+    if (ImGui::Button("OK", ImVec2(120 * s, 0)) ||
+        (keys && (ImGui::IsKeyPressed(GLFW_KEY_ENTER) || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE))))
+      ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+  }
+
+  if (confirm_request_) {
+    ImGui::OpenPopup("Unsaved changes###confirm");
+    confirm_request_ = false;
+  }
+  if (ImGui::BeginPopupModal("Unsaved changes###confirm", nullptr,
+                             ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("The scene has unsaved changes. Save them before you %s?", confirm_what_.c_str());
+    const ImVec2 b(120 * s, 0);
+    if (ImGui::Button("Save", b)) {
+      ImGui::CloseCurrentPopup();
+      if (handlers_.save()) {
+        if (!handlers_.dirty() && confirm_action_) confirm_action_();
+      } else {
+        // Untitled: the action waits for the Save As to succeed.
+        after_save_ = confirm_action_;
+        browse(Purpose::SaveAs, handlers_.start_dir(), "");
+      }
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard", b)) {
+      ImGui::CloseCurrentPopup();
+      if (confirm_action_) confirm_action_();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel", b) ||
+        (!ImGui::IsWindowAppearing() && ImGui::IsKeyPressed(GLFW_KEY_ESCAPE)))
+      ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+  }
+}
+
+}  // namespace pl

@@ -1,0 +1,61 @@
+#include "app/editor/logic/view_navigator.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pl {
+
+void ViewNavigator::frame(const Box& box, double aspect) {
+  if (box.empty()) return;
+  camera_.frame(box, aspect);
+  framed_ = true;
+}
+
+void ViewNavigator::frame_closely(const Box& box, double aspect) {
+  if (box.empty()) return;
+  const double keep_radius = camera_.scene_radius;
+  Box grown = box;
+  const double r = std::max(box.radius(), 0.08 * keep_radius);
+  grown.add(box.centre() + Vec3(r));
+  grown.add(box.centre() - Vec3(r));
+  camera_.frame(grown, aspect);
+  camera_.scene_radius = std::max(keep_radius, camera_.scene_radius);
+  framed_ = true;
+}
+
+void ViewNavigator::preset(ViewPreset p, const Box& scene, double aspect) {
+  if (scene.empty()) return;
+  camera_ = preset_camera(p, scene, aspect, camera_.orthographic);
+  framed_ = true;
+}
+
+void ViewNavigator::begin(Gesture g, const Vec2& pixel, const Vec3& pivot) {
+  gesture_ = g;
+  pivot_ = pivot;
+  press_ = last_ = pixel;
+  travel_ = 0;
+}
+
+void ViewNavigator::move(const Vec2& pixel, const ViewRect& rect) {
+  if (gesture_ == Gesture::None) return;
+  const Vec2 d = pixel - last_;
+  last_ = pixel;
+  travel_ = std::max(travel_, glm::length(pixel - press_));
+  if (d == Vec2(0)) return;
+  if (gesture_ == Gesture::Orbit)
+    orbit_about(camera_, pivot_, -d.x * kOrbitRadiansPerPixel, d.y * kOrbitRadiansPerPixel);
+  else
+    pan_pixels(camera_, rect, d.x, d.y);
+}
+
+bool ViewNavigator::end() {
+  const bool click = gesture_ != Gesture::None && travel_ < kClickSlopPx;
+  gesture_ = Gesture::None;
+  return click;
+}
+
+void ViewNavigator::wheel(const ViewRect& rect, const Vec2& pixel, double notches) {
+  if (notches != 0) zoom_at(camera_, rect, pixel, std::pow(kWheelZoom, notches));
+}
+
+}  // namespace pl

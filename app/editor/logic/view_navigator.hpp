@@ -1,0 +1,51 @@
+// The view's camera and the mouse gestures that move it: orbit (left drag where the active tool
+// does not take the press: a turntable about a pivot), pan (right or middle drag), zoom (wheel,
+// towards the cursor), framing and the preset views. A press and release that barely moved is
+// a click, not a gesture: end() says so, and the editor hands the click to the active tool (or
+// opens the context menu for the right button). GUI-free and unit-tested.
+#pragma once
+
+#include "app/editor/logic/camera_control.hpp"
+
+namespace pl {
+
+class ViewNavigator {
+ public:
+  enum class Gesture { None, Orbit, Pan };
+
+  const Camera& camera() const { return camera_; }
+  Camera& camera() { return camera_; }
+
+  // Until framed, the editor frames the scene on the next frame it draws (a new document).
+  bool framed() const { return framed_; }
+  void unframe() { framed_ = false; }
+  // Shows all of `box` from the current direction (F).
+  void frame(const Box& box, double aspect);
+  // Shows `box` closely (Shift+F), at least 8 % of the scene radius across, keeping the clipping
+  // planes sized for the whole scene.
+  void frame_closely(const Box& box, double aspect);
+  // A preset direction framing `scene`; keeps orthographic or perspective.
+  void preset(ViewPreset preset, const Box& scene, double aspect);
+
+  // Gestures: begin at the press, move with every cursor position, end at the release.
+  void begin(Gesture gesture, const Vec2& pixel, const Vec3& pivot);
+  void move(const Vec2& pixel, const ViewRect& rect);
+  // Ends the gesture. True when it was a click: the cursor never went further than the slop
+  // from where it was pressed.
+  bool end();
+  Gesture gesture() const { return gesture_; }
+  void wheel(const ViewRect& rect, const Vec2& pixel, double notches);
+
+  static constexpr double kClickSlopPx = 3.0;
+  static constexpr double kWheelZoom = 1.15;  // per notch
+
+ private:
+  Camera camera_;
+  bool framed_ = false;
+  Gesture gesture_ = Gesture::None;
+  Vec3 pivot_{0.0};
+  Vec2 press_{0.0}, last_{0.0};
+  double travel_ = 0;  // furthest distance from the press
+};
+
+}  // namespace pl

@@ -1,0 +1,88 @@
+#include "app/editor/side_panel.hpp"
+
+#include <imgui.h>
+
+#include "app/editor/logic/editor_layout.hpp"
+
+namespace pl {
+
+bool draw_side_panel(const SidePanel& p, double top, double bottom) {
+  const ImGuiIO& io = ImGui::GetIO();
+  const float w = float(EditorLayout::kSidePanelWidth * p.ui_scale);
+  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - w, float(top)));
+  ImGui::SetNextWindowSize(ImVec2(w, io.DisplaySize.y - float(top + bottom)));
+  ImGui::Begin("##side", nullptr,
+               ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove |
+                   ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
+  // Widgets take what is left after a label column of fixed width, so labels never clip.
+  ImGui::PushItemWidth(-110 * p.ui_scale);
+  bool rebuild = false;
+  draw_tools_section(p);
+  if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen))
+    draw_selection_section(p);
+  if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen))
+    rebuild = draw_display_section(p);
+  if (ImGui::CollapsingHeader("Work plane")) draw_work_plane_section(p);
+  if (p.doc.scene().network &&
+      ImGui::CollapsingHeader("Comparison", ImGuiTreeNodeFlags_DefaultOpen))
+    draw_comparison_section(p);
+  if (ImGui::CollapsingHeader("Continuity", ImGuiTreeNodeFlags_DefaultOpen))
+    draw_continuity_section(p);
+  ImGui::PopItemWidth();
+  ImGui::End();
+  return rebuild;
+}
+
+void draw_tools_section(const SidePanel& p) {
+  // One button per tool, from the Tools menu's actions (their keys and enabled state).
+  bool first = true;
+  for (const ActionRegistry::Entry& e : p.actions.entries("Tools")) {
+    if (!e.action) continue;
+    const Action& a = *e.action;
+    if (!first) ImGui::SameLine();
+    first = false;
+    const bool on = a.checked && a.checked();
+    if (on) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+    if (ImGui::Button(a.label.c_str())) p.actions.run(a.id);
+    if (on) ImGui::PopStyleColor();
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("%s%s", a.help.c_str(),
+                        a.keys.empty() ? "" : ("  (" + to_string(a.keys[0]) + ")").c_str());
+  }
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("%s", p.tools.active().hint().c_str());
+  ImGui::PopStyleColor();
+}
+
+void draw_work_plane_section(const SidePanel& p) {
+  WorkPlane& w = p.work_plane;
+  ImGui::Checkbox("Show grid", &w.shown);
+  int kind = static_cast<int>(w.kind);
+  static const char* kinds[] = {"View", "XY", "XZ", "YZ"};
+  if (ImGui::Combo("Plane", &kind, kinds, 4)) w.kind = static_cast<WorkPlaneKind>(kind);
+  double origin[3] = {w.origin.x, w.origin.y, w.origin.z};
+  if (ImGui::InputScalarN("Through", ImGuiDataType_Double, origin, 3, nullptr, nullptr, "%.4g"))
+    w.origin = Vec3(origin[0], origin[1], origin[2]);
+  if (p.actions.find("plane.at_selection")) {
+    const Action& a = *p.actions.find("plane.at_selection");
+    ImGui::BeginDisabled(!p.actions.is_enabled(a));
+    if (ImGui::Button("Through the selection")) p.actions.run(a.id);
+    ImGui::EndDisabled();
+  }
+  ImGui::TextDisabled("New points are placed on this plane.");
+}
+
+void draw_comparison_section(const SidePanel& p) {
+  const Action* compare = p.actions.find("view.compare");
+  bool on = p.views.compare();
+  if (compare && ImGui::Checkbox("Gregory | GB side by side  (C)", &on)) p.actions.run(compare->id);
+  if (!p.views.compare()) return;
+  ImGui::Checkbox("Colour GB by distance  (D)", &p.views.difference);
+  if (p.views.difference)
+    ImGui::TextWrapped(
+        "Signed distance of each GB sample to the nearest point of the Gregory "
+        "tessellation; max |d| = %.3g",
+        p.views.difference_max());
+}
+
+}  // namespace pl

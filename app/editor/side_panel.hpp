@@ -1,0 +1,41 @@
+// The side panel: tools, selection inspector, display, work plane, comparison and continuity
+// sections, one function each, over the parts they show. Every change of the document goes
+// through a command or an action; the sections only lay out widgets. ImGui code.
+#pragma once
+
+#include "app/editor/logic/actions.hpp"
+#include "app/editor/logic/continuity_monitor.hpp"
+#include "app/editor/logic/document_session.hpp"
+#include "app/editor/logic/preferences.hpp"
+#include "app/editor/logic/selection.hpp"
+#include "app/editor/logic/tool.hpp"
+#include "app/editor/scene_views.hpp"
+
+namespace pl {
+
+struct SidePanel {
+  Preferences& prefs;
+  SceneViews& views;
+  Document& doc;
+  Selection& selection;
+  const ActionRegistry& actions;
+  const ContinuityMonitor& continuity;
+  WorkPlane& work_plane;
+  ToolBox& tools;
+  ColorRange range;  // the colour range shown (a "fixed range" starts from it)
+  float ui_scale = 1;
+};
+
+// Draws the panel at the right of the window, between the bars. Returns true when the
+// evaluation densities changed (the views must be rebuilt).
+bool draw_side_panel(const SidePanel& p, double top, double bottom);
+
+void draw_tools_section(const SidePanel& p);
+void draw_selection_section(const SidePanel& p);
+// Returns true when the densities changed.
+bool draw_display_section(const SidePanel& p);
+void draw_work_plane_section(const SidePanel& p);
+void draw_comparison_section(const SidePanel& p);
+void draw_continuity_section(const SidePanel& p);
+
+}  // namespace pl

@@ -1,0 +1,147 @@
+#include "app/editor/viewport_overlays.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_set>
+
+#include "app/editor/theme.hpp"
+#include "render/legend.hpp"
+
+namespace pl {
+
+namespace {
+
+ImU32 rgba(float r, float g, float b, float a = 1) {
+  return ImGui::ColorConvertFloat4ToU32(ImVec4(r, g, b, a));
+}
+
+ImVec2 im(const Vec2& p) {
+  return ImVec2(float(p.x), float(p.y));
+}
+
+// One number per PointRef, for a set of the selected points.
+uint64_t point_key(const PointRef& r) {
+  return uint64_t(r.kind) << 62 ^ uint64_t(uint32_t(r.object)) << 30 ^ uint64_t(uint32_t(r.index));
+}
+
+}  // namespace
+
+void draw_point_overlays(const OverlayFrame& o) {
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  const ImVec2 lo(float(o.rect.x), float(o.rect.y)),
+      hi(float(o.rect.x + o.rect.width), float(o.rect.y + o.rect.height));
+  dl->PushClipRect(lo, hi, true);
+  auto screen = [&](const Vec3& p) { return project_to_window(o.camera, o.rect, p); };
+  const float s = o.ui_scale;
+  const DisplaySettings& d = o.prefs.display;
+
+  // The edge with the largest normal angle in the Continuity panel.
+  const auto& curves = o.live.draw().network_curves;
+  const int worst = o.continuity ? o.continuity->worst_edge() : -1;
+  if (worst >= 0 && worst < int(curves.size()) && d.network_curves) {
+    std::vector<ImVec2> line;
+    for (const Vec3& p : curves[worst])
+      if (const auto q = screen(p)) line.push_back(im(*q));
+    dl->AddPolyline(line.data(), int(line.size()), rgba(0.93f, 0.22f, 0.25f, 0.9f), 0, 4.0f * s);
+  }
+
+  const ScenePoints& pts = o.live.points();
+  if (d.control_net) {
+    std::unordered_set<uint64_t> selected;
+    for (const PointRef& r : o.selection.points()) selected.insert(point_key(r));
+    if (!selected.empty())
+      for (std::size_t i = 0; i < pts.refs.size(); ++i) {
+        if (!pts.refs[i] || !selected.count(point_key(*pts.refs[i]))) continue;
+        if (const auto q = screen(pts.positions[i])) {
+          dl->AddCircleFilled(im(*q), 6.5f * s, rgba(kAccent[0], kAccent[1], kAccent[2]));
+          dl->AddCircle(im(*q), 8.5f * s, rgba(0.1f, 0.1f, 0.1f, 0.9f), 0, 1.5f * s);
+        }
+      }
+    if (o.hover && o.hover->point >= 0 && o.hover->point < int(pts.positions.size())) {
+      const int i = o.hover->point;
+      if (const auto q = screen(pts.positions[i])) {
+        if (!o.hover->derived_point) {
+          dl->AddCircle(im(*q), 10.0f * s, rgba(1, 1, 1, 0.95f), 0, 2.0f * s);
+          ImGui::SetTooltip("%s", describe(*pts.refs[i]).c_str());
+        } else {
+          static const char* kinds[] = {"boundary", "inner", "twin", "central"};
+          dl->AddCircle(im(*q), 10.0f * s, rgba(0.7f, 0.7f, 0.7f, 0.8f), 0, 1.5f * s);
+          ImGui::SetTooltip("derived %s point (follows the network; not editable)",
+                            kinds[int(pts.kinds[i])]);
+        }
+      }
+    }
+  }
+  if (o.hover && o.probe && *o.probe && o.prefs.show_probe)
+    if (const auto q = screen((*o.probe)->position))
+      dl->AddCircle(im(*q), 4.0f * s, rgba(0.05f, 0.05f, 0.05f, 0.9f), 0, 1.5f * s);
+  dl->PopClipRect();
+}
+
+void draw_panel_label(const OverlayFrame& o, int panel, bool difference, const ViewRect& whole) {
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  const float s = o.ui_scale;
+  const ImVec2 lo(float(o.rect.x), float(o.rect.y)),
+      hi(float(o.rect.x + o.rect.width), float(o.rect.y + o.rect.height));
+  const char* label = panel == 0   ? "Gregory"
+                      : difference ? "Generalized Bezier (coloured by distance to Gregory)"
+                                   : "Generalized Bezier";
+  dl->AddText(ImVec2(lo.x + 12 * s, lo.y + 10 * s), rgba(0.12f, 0.13f, 0.16f), label);
+  if (o.rect.x > whole.x)
+    dl->AddLine(ImVec2(lo.x, lo.y), ImVec2(lo.x, hi.y), rgba(0.1f, 0.1f, 0.12f), 2 * s);
+}
+
+void draw_axis_triad(const OverlayFrame& o) {
+  // Bottom-left corner: which way x, y, z point from this camera.
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  const float s = o.ui_scale;
+  const ImVec2 origin(float(o.rect.x) + 34 * s, float(o.rect.y + o.rect.height) - 34 * s);
+  const Vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const ImU32 colors[3] = {rgba(0.85f, 0.25f, 0.25f), rgba(0.3f, 0.7f, 0.3f),
+                           rgba(0.25f, 0.45f, 0.9f)};
+  const char* names[3] = {"x", "y", "z"};
+  for (int a = 0; a < 3; ++a) {
+    const ImVec2 e(origin.x + float(glm::dot(axes[a], o.camera.right())) * 22 * s,
+                   origin.y - float(glm::dot(axes[a], o.camera.up())) * 22 * s);
+    dl->AddLine(origin, e, colors[a], 2.0f * s);
+    dl->AddText(ImVec2(e.x + 2 * s, e.y - 7 * s), colors[a], names[a]);
+  }
+}
+
+void draw_legend(const ViewRect& rect, const ColorRange& range, const std::string& title, float s) {
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  const float bar_w = 16 * s, bar_h = float(std::min(rect.height * 0.5, 320.0 * s));
+  const float x1 = float(rect.x + rect.width) - 70 * s, x0 = x1 - bar_w;
+  const float y0 = float(rect.y + rect.height * 0.5) - bar_h / 2, y1 = y0 + bar_h;
+  dl->AddRectFilled(ImVec2(x0 - 12 * s, y0 - 30 * s), ImVec2(x1 + 64 * s, y1 + 12 * s),
+                    rgba(1, 1, 1, 0.72f), 4 * s);
+  constexpr int kSteps = 64;
+  for (int i = 0; i < kSteps; ++i) {
+    // Top is hi: t runs from 1 at the top to 0 at the bottom.
+    const double t0 = 1 - double(i) / kSteps, t1 = 1 - double(i + 1) / kSteps;
+    const Rgb a = color_map(t0), b = color_map(t1);
+    dl->AddRectFilledMultiColor(ImVec2(x0, y0 + bar_h * i / kSteps),
+                                ImVec2(x1, y0 + bar_h * (i + 1) / kSteps), rgba(a[0], a[1], a[2]),
+                                rgba(a[0], a[1], a[2]), rgba(b[0], b[1], b[2]),
+                                rgba(b[0], b[1], b[2]));
+  }
+  dl->AddRect(ImVec2(x0, y0), ImVec2(x1, y1), rgba(0.2f, 0.2f, 0.22f), 0, 0, 1.0f);
+  const ImU32 ink = rgba(0.12f, 0.13f, 0.16f);
+  const double ticks[5] = {range.hi, range.hi / 2, 0, range.lo / 2, range.lo};
+  for (int i = 0; i < 5; ++i) {
+    const float y = y0 + bar_h * i / 4;
+    dl->AddLine(ImVec2(x1, y), ImVec2(x1 + 4 * s, y), ink, 1.0f);
+    dl->AddText(ImVec2(x1 + 7 * s, y - 7 * s), ink, format_tick(ticks[i]).c_str());
+  }
+  const ImVec2 ts = ImGui::CalcTextSize(title.c_str());
+  dl->AddText(ImVec2(std::min(x0 - 6 * s, x1 + 60 * s - ts.x), y0 - 24 * s), ink, title.c_str());
+}
+
+void draw_error_text(const ViewRect& r, const std::string& text) {
+  ImGui::GetBackgroundDrawList()->AddText(ImVec2(float(r.x + 20), float(r.y + 20)),
+                                          rgba(1, 0.55f, 0.5f), text.c_str());
+}
+
+}  // namespace pl

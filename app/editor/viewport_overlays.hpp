@@ -1,0 +1,37 @@
+// The 2D overlays over a view panel, drawn with ImGui's background list (crisp at any scale, no
+// GL programs): selected and hovered points with their tooltips, the worst continuity edge, the
+// probe's mark, the comparison's panel labels, the axis triad and the colour legend.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "app/editor/logic/continuity_monitor.hpp"
+#include "app/editor/logic/live_surfaces.hpp"
+#include "app/editor/logic/preferences.hpp"
+#include "app/editor/logic/scene_picker.hpp"
+#include "app/editor/logic/surface_probe.hpp"
+
+namespace pl {
+
+struct OverlayFrame {
+  const ViewRect& rect;
+  const Camera& camera;
+  const LiveSurfaces& live;  // what the panel shows
+  const Preferences& prefs;
+  const Selection& selection;
+  const ContinuityMonitor* continuity;
+  const PickResult* hover;  // null unless the cursor is over this panel
+  const std::optional<ProbeHit>* probe;
+  float ui_scale;
+};
+
+void draw_point_overlays(const OverlayFrame& o);
+// "Gregory" / "Generalized Bezier" at the top left of a comparison panel, and the divider.
+void draw_panel_label(const OverlayFrame& o, int panel, bool difference, const ViewRect& whole);
+void draw_axis_triad(const OverlayFrame& o);
+void draw_legend(const ViewRect& rect, const ColorRange& range, const std::string& title,
+                 float ui_scale);
+void draw_error_text(const ViewRect& rect, const std::string& text);
+
+}  // namespace pl

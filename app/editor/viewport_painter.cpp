@@ -1,0 +1,234 @@
+#include "app/editor/viewport_painter.hpp"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "app/editor/logic/selection_properties.hpp"
+#include "app/editor/theme.hpp"
+#include "app/editor/viewport_overlays.hpp"
+#include "render/frame.hpp"
+#include "render/gl.hpp"
+
+namespace pl {
+
+namespace {
+
+// The selection in the accent colour; what is under the cursor (what a click would select) in a
+// fainter tint of it and white lines; the grid faint, its axes in the axis triad's colours.
+constexpr std::array<float, 4> kSelectedTint = {kAccent[0], kAccent[1], kAccent[2], 0.30f};
+constexpr std::array<float, 4> kSelectedLine = {kAccent[0], kAccent[1], kAccent[2], 1.0f};
+constexpr std::array<float, 4> kHoverTint = {kAccent[0], kAccent[1], kAccent[2], 0.13f};
+constexpr std::array<float, 4> kHoverLine = {1.0f, 1.0f, 1.0f, 0.85f};
+constexpr std::array<float, 4> kGridLine = {0.42f, 0.44f, 0.50f, 0.55f};
+// Grid cells across the view's height, and how far the grid reaches (in cells from its centre).
+constexpr int kGridCellsPerView = 12;
+constexpr int kGridHalfCells = 24;
+
+// The colour of the world axis `a` points along (x red, y green, z blue, as the axis triad).
+std::array<float, 4> axis_colour(const Vec3& a) {
+  if (std::abs(a.x) > 0.5) return {0.85f, 0.25f, 0.25f, 0.8f};
+  if (std::abs(a.y) > 0.5) return {0.3f, 0.7f, 0.3f, 0.8f};
+  return {0.25f, 0.45f, 0.9f, 0.8f};
+}
+
+void append_segments(const Polyline& line, std::vector<Vec3>& out) {
+  for (std::size_t k = 1; k < line.size(); ++k) {
+    out.push_back(line[k - 1]);
+    out.push_back(line[k]);
+  }
+}
+
+// The key of what a panel's highlight arrays were built from: the live evaluation shown (coarse
+// and fine have their own curves), its revision and the selection (or hover) state.
+uint64_t guide_key(const LiveSurfaces& live, uint64_t state) {
+  const auto p = reinterpret_cast<std::uintptr_t>(&live);
+  return (static_cast<uint64_t>(p) * 0x9E3779B97F4A7C15ull) ^ (live.synced_revision() << 20) ^
+         state;
+}
+
+uint64_t item_key(const std::optional<SelectionItem>& item) {
+  if (!item) return 0;
+  return (uint64_t(item->kind) + 1) << 56 ^ uint64_t(uint32_t(item->index)) << 24 ^
+         uint64_t(uint32_t(item->point.object)) << 8 ^ uint64_t(uint32_t(item->point.index));
+}
+
+}  // namespace
+
+void ViewportPainter::update_guides(const ViewportFrame& f, int panel) {
+  PanelGuides& g = guides_[panel];
+  const LiveSurfaces& live = f.views->panel(panel).shown();
+  const Scene& scene = f.doc->scene();
+  const auto& curves = live.draw().network_curves;
+  // Which face or patch each surface draws (built only when a highlight changes).
+  std::vector<SelectionItem> items;
+  auto surface_item = [&](std::size_t s) -> const SelectionItem& {
+    if (items.empty()) items = surface_items(live.surfaces());
+    return items[s];
+  };
+  const std::size_t surfaces = live.surfaces().surfaces.size();
+
+  const uint64_t selected_key = guide_key(live, f.selection->serial());
+  if (selected_key != g.selected_key) {
+    g.selected_key = selected_key;
+    std::vector<Vec3> lines;
+    std::vector<int> edges = f.selection->of_kind(SelectionItem::Kind::Edge);
+    const std::vector<int> faces = f.selection->of_kind(SelectionItem::Kind::Face);
+    if (scene.network)
+      for (const std::vector<int>& sides : face_edges(*scene.network, faces))
+        edges.insert(edges.end(), sides.begin(), sides.end());
+    for (int e : edges)
+      if (e >= 0 && e < int(curves.size())) append_segments(curves[e], lines);
+    if (!lines.empty() || !g.selected.empty()) g.selected.set(lines, {});
+    g.selected_surfaces.clear();
+    const std::set<int> faces_set(faces.begin(), faces.end());
+    const std::vector<int> patches = f.selection->of_kind(SelectionItem::Kind::Patch);
+    const std::set<int> patch_set(patches.begin(), patches.end());
+    if (!faces_set.empty() || !patch_set.empty())
+      for (std::size_t s = 0; s < surfaces; ++s) {
+        const SelectionItem& i = surface_item(s);
+        if ((i.kind == SelectionItem::Kind::Face ? faces_set : patch_set).count(i.index))
+          g.selected_surfaces.push_back(int(s));
+      }
+  }
+
+  const std::optional<SelectionItem> hovered =
+      panel == f.hover_panel && f.hover ? f.hover->item : std::nullopt;
+  const uint64_t hovered_key = guide_key(live, item_key(hovered));
+  if (hovered_key != g.hovered_key) {
+    g.hovered_key = hovered_key;
+    std::vector<Vec3> lines;
+    g.hovered_surface = -1;
+    if (hovered && hovered->kind == SelectionItem::Kind::Edge &&
+        hovered->index < int(curves.size()))
+      append_segments(curves[hovered->index], lines);
+    if (hovered && hovered->kind != SelectionItem::Kind::Point)
+      for (std::size_t s = 0; s < surfaces; ++s)
+        if (surface_item(s) == *hovered) g.hovered_surface = int(s);
+    if (!lines.empty() || !g.hovered.empty()) g.hovered.set(lines, {});
+  }
+
+  if (f.work_plane->shown) {
+    // Sized to the view at the camera's target, centred where the target meets the plane.
+    const Camera& c = *f.camera;
+    const PlaneFrame plane = f.work_plane->frame(c);
+    const double step = grid_step(2 * c.half_height(), kGridCellsPerView);
+    // Within the clipping planes, which hug the scene (2 scene radii about the target).
+    const int half_cells = std::clamp(int(1.8 * c.scene_radius / step), 1, kGridHalfCells);
+    g.grid.set(grid_segments(plane, c.target, step, half_cells), {});
+    const double reach = half_cells * step;
+    const Vec2 centre = plane_coordinates(plane, c.target);
+    // The plane's own axes through its origin (a view-aligned plane has none worth showing).
+    std::vector<Vec3> u, v;
+    if (f.work_plane->kind != WorkPlaneKind::View) {
+      u = {plane.origin + (centre.x - reach) * plane.u,
+           plane.origin + (centre.x + reach) * plane.u};
+      v = {plane.origin + (centre.y - reach) * plane.v,
+           plane.origin + (centre.y + reach) * plane.v};
+    }
+    g.axis_u.set(u, {});
+    g.axis_v.set(v, {});
+  }
+}
+
+void ViewportPainter::draw_panel_gl(const ViewportFrame& f, int panel, const ColorRange& range,
+                                    const DisplaySettings& display) {
+  const ViewRect& r = f.panels[panel];
+  int fbw = 0, fbh = 0, ww = 0, wh = 0;
+  glfwGetFramebufferSize(f.window, &fbw, &fbh);
+  glfwGetWindowSize(f.window, &ww, &wh);
+  const double sx = ww > 0 ? double(fbw) / ww : 1.0;
+  Viewport v;
+  v.x = int(std::lround(r.x * sx));
+  v.y = int(std::lround((wh - r.y - r.height) * sx));
+  v.width = std::max(1, int(std::lround(r.width * sx)));
+  v.height = std::max(1, int(std::lround(r.height * sx)));
+  v.pixel_scale = sx * f.ui_scale;
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(v.x, v.y, v.width, v.height);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  const SceneRenderer& renderer = *f.renderer;
+  renderer.draw_backdrop(v);
+  const Camera& camera = *f.camera;
+  const GpuScene& gpu = f.views->panel(panel).gpu();
+  const GpuScene* difference = f.views->showing_difference() && panel == 1
+                                   ? f.views->difference_scene(f.doc->revision())
+                                   : nullptr;
+  if (difference) {
+    DisplaySettings d = display;
+    d.base = BaseMode::Curvature;
+    d.curvature = CurvatureKind::Mean;  // the field that holds the distance
+    d.curvature_lighting = true;
+    const double m = f.views->difference_range();
+    renderer.draw(*difference, camera, d, {-m, m}, v);
+  } else {
+    renderer.draw(gpu, camera, display, range, v);
+  }
+
+  update_guides(f, panel);
+  const PanelGuides& g = guides_[panel];
+  // Tints use the triangles of what was drawn: the difference copy has the same ones.
+  const GpuScene& drawn = difference ? *difference : gpu;
+  renderer.draw_tint(drawn, g.selected_surfaces, camera, kSelectedTint, v);
+  if (g.hovered_surface >= 0 && std::find(g.selected_surfaces.begin(), g.selected_surfaces.end(),
+                                          g.hovered_surface) == g.selected_surfaces.end()) {
+    const int one[1] = {g.hovered_surface};
+    renderer.draw_tint(drawn, one, camera, kHoverTint, v);
+  }
+  if (f.work_plane->shown) {
+    renderer.draw_guides(g.grid, camera, kGridLine, 1.0f, true, v);
+    const PlaneFrame plane = f.work_plane->frame(camera);
+    renderer.draw_guides(g.axis_u, camera, axis_colour(plane.u), 1.6f, true, v);
+    renderer.draw_guides(g.axis_v, camera, axis_colour(plane.v), 1.6f, true, v);
+  }
+  renderer.draw_guides(g.selected, camera, kSelectedLine, 3.5f, true, v);
+  renderer.draw_guides(g.hovered, camera, kHoverLine, 3.0f, false, v);
+  glDisable(GL_SCISSOR_TEST);
+}
+
+void ViewportPainter::paint(const ViewportFrame& f, const ColorRange& range) {
+  int fbw = 0, fbh = 0;
+  glfwGetFramebufferSize(f.window, &fbw, &fbh);
+  glViewport(0, 0, fbw, fbh);
+  glDisable(GL_SCISSOR_TEST);
+  glClearColor(0.155f, 0.160f, 0.175f, 1.0f);
+  glClearDepth(1.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  if (!f.views->ready()) {
+    draw_error_text(f.viewport, "Cannot show this scene:\n" + f.views->error());
+    return;
+  }
+  // One comb scale for side-by-side panels, as one colour range.
+  std::vector<const GpuScene*> scenes;
+  for (int i = 0; i < f.views->panels(); ++i) scenes.push_back(&f.views->panel(i).gpu());
+  const DisplaySettings display = common_comb_length(f.prefs->display, scenes);
+  for (int i = 0; i < f.views->panels(); ++i) draw_panel_gl(f, i, range, display);
+
+  for (int i = 0; i < f.views->panels(); ++i) {
+    OverlayFrame o{f.panels[i],
+                   *f.camera,
+                   f.views->panel(i).shown(),
+                   *f.prefs,
+                   *f.selection,
+                   f.continuity,
+                   i == f.hover_panel ? f.hover : nullptr,
+                   f.probe,
+                   f.ui_scale};
+    draw_point_overlays(o);
+    if (f.views->compare()) draw_panel_label(o, i, f.views->showing_difference(), f.viewport);
+    draw_axis_triad(o);
+  }
+  if (f.views->showing_difference()) {
+    const double m = f.views->difference_range();
+    draw_legend(f.viewport, {-m, m}, "distance GB - Gregory", f.ui_scale);
+  } else if (f.prefs->display.base == BaseMode::Curvature) {
+    draw_legend(f.viewport, range,
+                std::string(curvature_name(f.prefs->display.curvature)) + " curvature", f.ui_scale);
+  }
+}
+
+}  // namespace pl

@@ -1,0 +1,65 @@
+// Draws the 3D view: each panel's filling with the renderer, then over it the selection (faces
+// tinted, edges and face borders in the accent colour, depth-tested so hidden parts stay
+// hidden), the object under the cursor (a lighter tint), the work-plane grid, and the ImGui
+// overlays (selected and hovered points, tooltips, panel labels, axis triad, legend). Owns the
+// GPU copies of those highlight lines, re-uploaded only when the selection, the hover or the
+// document changes. Needs a current GL context and an ImGui frame.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "app/editor/logic/continuity_monitor.hpp"
+#include "app/editor/logic/preferences.hpp"
+#include "app/editor/logic/scene_picker.hpp"
+#include "app/editor/logic/selection.hpp"
+#include "app/editor/logic/surface_probe.hpp"
+#include "app/editor/logic/work_plane.hpp"
+#include "app/editor/scene_views.hpp"
+#include "render/scene_renderer.hpp"
+
+struct GLFWwindow;
+
+namespace pl {
+
+// Everything one frame of the view shows.
+struct ViewportFrame {
+  GLFWwindow* window = nullptr;
+  const SceneRenderer* renderer = nullptr;
+  SceneViews* views = nullptr;
+  const Document* doc = nullptr;
+  const Camera* camera = nullptr;
+  const Preferences* prefs = nullptr;
+  const Selection* selection = nullptr;
+  const WorkPlane* work_plane = nullptr;
+  const ContinuityMonitor* continuity = nullptr;
+  ViewRect viewport;                  // the whole 3D area
+  std::vector<ViewRect> panels;       // one per view panel
+  int hover_panel = -1;               // panel under the cursor
+  const PickResult* hover = nullptr;  // what lies under the cursor there
+  const std::optional<ProbeHit>* probe = nullptr;
+  float ui_scale = 1;
+};
+
+class ViewportPainter {
+ public:
+  // Draws the panels and their overlays; `range` is the common curvature colour range.
+  void paint(const ViewportFrame& f, const ColorRange& range);
+
+ private:
+  // The highlight lines of one panel, uploaded when their key changes.
+  struct PanelGuides {
+    GpuPrimitives selected, hovered, grid, axis_u, axis_v;
+    uint64_t selected_key = UINT64_MAX, hovered_key = UINT64_MAX;
+    std::vector<int> selected_surfaces;
+    int hovered_surface = -1;
+  };
+  void update_guides(const ViewportFrame& f, int panel);
+  void draw_panel_gl(const ViewportFrame& f, int panel, const ColorRange& range,
+                     const DisplaySettings& display);
+  std::array<PanelGuides, 2> guides_;
+};
+
+}  // namespace pl

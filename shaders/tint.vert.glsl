@@ -1,0 +1,8 @@
+#version 330 core
+// Surface positions only: the editor's selection tint over surfaces already drawn.
+layout(location = 0) in vec3 a_position;
+uniform mat4 u_view_projection;
+
+void main() {
+  gl_Position = u_view_projection * vec4(a_position, 1.0);
+}

@@ -1,0 +1,109 @@
+// The action table: key names, menus and sub-menus, key dispatch, conflicts and the F1 rows.
+#include <gtest/gtest.h>
+
+#include "app/editor/logic/actions.hpp"
+
+namespace pl {
+namespace {
+
+TEST(EditorActions, ChordsPrintAndParse) {
+  for (const char* text : {"Ctrl+Shift+S", "F1", "F12", "Del", "PgUp", "Shift+F", "Alt+Left",
+                           "Ctrl+0", "Esc", "Ctrl+Shift+Alt+Z"}) {
+    const auto c = parse_chord(text);
+    ASSERT_TRUE(c) << text;
+    EXPECT_EQ(to_string(*c), text);
+  }
+  EXPECT_EQ(parse_chord("Ctrl+N")->key, Key::N);
+  EXPECT_TRUE(parse_chord("Ctrl+N")->ctrl);
+  EXPECT_FALSE(parse_chord("Ctrl+N")->shift);
+  for (const char* bad : {"", "Ctrl+", "Ctrl+Ctrl+S", "F13", "F0", "Hyper+S", "SS", "s"})
+    EXPECT_FALSE(parse_chord(bad)) << bad;
+}
+
+struct Counter {
+  int runs = 0;
+  std::optional<KeyChord> last;
+};
+
+Action counting(const std::string& id, const std::string& menu, Counter& c,
+                std::vector<KeyChord> keys = {}) {
+  Action a;
+  a.id = id;
+  a.menu = menu;
+  a.label = id;
+  a.keys = std::move(keys);
+  a.run = [&c](const std::optional<KeyChord>& k) {
+    ++c.runs;
+    c.last = k;
+  };
+  return a;
+}
+
+TEST(EditorActions, MenusKeysAndContext) {
+  ActionRegistry r;
+  Counter save, close, scheme, frame;
+  bool can_close = false;
+  r.add(counting("file.save", "File", save, {*parse_chord("Ctrl+S")}));
+  Action c = counting("file.close", "File", close, {*parse_chord("Ctrl+W")});
+  c.enabled = [&] { return can_close; };
+  r.add(std::move(c));
+  Action s = counting("face.scheme.gb", "Face/Scheme", scheme);
+  s.context = context_bit(ContextTarget::Face);
+  r.add(std::move(s));
+  r.add(counting("view.frame", "View", frame, {*parse_chord("F"), *parse_chord("Shift+F")}));
+  EXPECT_THROW(r.add(counting("file.save", "File", save)), std::invalid_argument);
+  Action nothing;
+  nothing.id = "x";
+  EXPECT_THROW(r.add(nothing), std::invalid_argument);
+
+  EXPECT_EQ(r.menus(), (std::vector<std::string>{"File", "Face", "View"}));
+  const auto face = r.entries("Face");
+  ASSERT_EQ(face.size(), 1u);
+  EXPECT_EQ(face[0].action, nullptr);
+  EXPECT_EQ(face[0].submenu, "Face/Scheme");
+  ASSERT_EQ(r.entries("Face/Scheme").size(), 1u);
+  EXPECT_EQ(r.entries("Face/Scheme")[0].action->id, "face.scheme.gb");
+
+  EXPECT_TRUE(r.trigger(*parse_chord("Ctrl+S")));
+  EXPECT_EQ(save.runs, 1);
+  EXPECT_EQ(*save.last, *parse_chord("Ctrl+S"));
+  EXPECT_FALSE(r.trigger(*parse_chord("Ctrl+W")));  // disabled
+  EXPECT_EQ(r.bound_to(*parse_chord("Ctrl+W"))->id, "file.close");
+  can_close = true;
+  EXPECT_TRUE(r.trigger(*parse_chord("Ctrl+W")));
+  EXPECT_TRUE(r.trigger(*parse_chord("Shift+F")));
+  EXPECT_EQ(frame.last->shift, true);
+  EXPECT_FALSE(r.trigger(*parse_chord("Ctrl+Q")));  // unbound
+  EXPECT_TRUE(r.run("face.scheme.gb"));
+  EXPECT_FALSE(scheme.last);  // from a menu: no key
+  EXPECT_FALSE(r.run("no.such"));
+
+  ASSERT_EQ(r.for_context(ContextTarget::Face).size(), 1u);
+  EXPECT_TRUE(r.for_context(ContextTarget::Empty).empty());
+  EXPECT_TRUE(r.conflicts().empty());
+  r.add(counting("other.save", "Other", save, {*parse_chord("Ctrl+S")}));
+  ASSERT_EQ(r.conflicts().size(), 1u);
+  EXPECT_EQ(r.conflicts()[0], "Ctrl+S: file.save, other.save");
+}
+
+TEST(EditorActions, HelpListsEveryKeyThenTheMouse) {
+  ActionRegistry r;
+  Counter c;
+  Action a = counting("view.frame", "View", c, {*parse_chord("F"), *parse_chord("Shift+F")});
+  a.help = "frame all / selection";
+  r.add(std::move(a));
+  r.add(counting("file.export", "File", c));  // no key: not in F1
+  Action nudge = counting("edit.nudge", "", c, {*parse_chord("Left")});
+  nudge.keys_text = "Arrows";
+  r.add(std::move(nudge));
+  const auto rows = help_rows(r, {{"Wheel", "zoom"}});
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0].keys, "F, Shift+F");
+  EXPECT_EQ(rows[0].what, "frame all / selection");
+  EXPECT_EQ(rows[1].keys, "Arrows");
+  EXPECT_EQ(rows[1].what, "edit.nudge");
+  EXPECT_EQ(rows[2].keys, "Wheel");
+}
+
+}  // namespace
+}  // namespace pl
