@@ -22,15 +22,13 @@
 
 namespace pl {
 
-class GapFillPatch final : public Patch {
+class GapFillPatch final : public PatchType<GapFillPatch> {
  public:
   static constexpr const char* kType = "gap-fill";  // the scene-format type name
   // Throws std::invalid_argument if the v ranges differ, an end is not clamped, or the gap
   // width or a cross derivative vanishes somewhere along the curves.
   GapFillPatch(BSplinePatch q, BSplinePatch r);
 
-  std::unique_ptr<Patch> clone() const override { return std::make_unique<GapFillPatch>(*this); }
-  std::string type() const override { return kType; }
   const Domain& domain() const override { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
   void set_control_point(std::size_t k, const Vec3& p) override;

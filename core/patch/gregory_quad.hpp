@@ -32,7 +32,7 @@
 
 namespace pl {
 
-class GregoryQuadPatch final : public Patch {
+class GregoryQuadPatch final : public PatchType<GregoryQuadPatch> {
  public:
   static constexpr const char* kType = "gregory-quad";  // the scene-format type name
   static constexpr std::size_t kPointCount = 20;
@@ -48,10 +48,6 @@ class GregoryQuadPatch final : public Patch {
   // Throws std::invalid_argument unless there are 20 points.
   explicit GregoryQuadPatch(std::vector<Vec3> points);
 
-  std::unique_ptr<Patch> clone() const override {
-    return std::make_unique<GregoryQuadPatch>(*this);
-  }
-  std::string type() const override { return kType; }
   const Domain& domain() const override { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
   void basis(Vec2 x, std::span<Jet> out) const override;

@@ -12,13 +12,11 @@
 
 namespace pl {
 
-class HermitePatch final : public Patch {
+class HermitePatch final : public PatchType<HermitePatch> {
  public:
   static constexpr const char* kType = "hermite";  // the scene-format type name
   explicit HermitePatch(std::vector<Vec3> q);      // exactly 16 entries, order above
 
-  std::unique_ptr<Patch> clone() const override { return std::make_unique<HermitePatch>(*this); }
-  std::string type() const override { return kType; }
   const Domain& domain() const override { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
   void basis(Vec2 x, std::span<Jet> out) const override;

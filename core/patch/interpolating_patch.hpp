@@ -7,15 +7,11 @@
 
 namespace pl {
 
-class InterpolatingPatch final : public Patch {
+class InterpolatingPatch final : public PatchType<InterpolatingPatch> {
  public:
   static constexpr const char* kType = "interpolating";   // the scene-format type name
   explicit InterpolatingPatch(std::vector<Vec3> points);  // exactly 16 points
 
-  std::unique_ptr<Patch> clone() const override {
-    return std::make_unique<InterpolatingPatch>(*this);
-  }
-  std::string type() const override { return kType; }
   const Domain& domain() const override { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
   void basis(Vec2 x, std::span<Jet> out) const override;

@@ -78,6 +78,20 @@ class Patch {
   std::vector<Vec3> points_;
 };
 
+// The base of a concrete patch class Derived: clone() as a copy, and type() as Derived::kType,
+// the class's scene-format type name, written once (its codec registers under the same).
+template <class Derived>
+class PatchType : public Patch {
+ public:
+  std::unique_ptr<Patch> clone() const final {
+    return std::make_unique<Derived>(static_cast<const Derived&>(*this));
+  }
+  std::string type() const final { return Derived::kType; }
+
+ protected:
+  using Patch::Patch;
+};
+
 // Sum of C_k phi_k: the reference evaluation used by the default evaluate() and by tests.
 SurfaceJet combine(std::span<const Vec3> points, std::span<const Jet> phi);
 

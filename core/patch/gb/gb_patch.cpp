@@ -39,7 +39,7 @@ std::size_t GBPatch::point_count(int n, int d) {
 }
 
 GBPatch::GBPatch(int sides, int degree, std::vector<Vec3> points)
-    : Patch(std::move(points)),
+    : PatchType(std::move(points)),
       n_(checked_sides(sides, degree)),
       d_(degree),
       l_(layers(degree)),

@@ -36,7 +36,7 @@
 
 namespace pl {
 
-class GBPatch final : public Patch {
+class GBPatch final : public PatchType<GBPatch> {
  public:
   static constexpr int kMaxSides = WachspressParameters::kMaxSides;
   static constexpr int kMaxDegree = 20;
@@ -49,8 +49,6 @@ class GBPatch final : public Patch {
   static int layers(int degree) { return (degree + 1) / 2; }
   static std::size_t point_count(int sides, int degree);
 
-  std::unique_ptr<Patch> clone() const override { return std::make_unique<GBPatch>(*this); }
-  std::string type() const override { return kType; }
   const Domain& domain() const override { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
   void set_control_point(std::size_t k, const Vec3& p) override;

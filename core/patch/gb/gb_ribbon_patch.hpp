@@ -32,7 +32,7 @@
 
 namespace pl {
 
-class GBRibbonPatch final : public Patch {
+class GBRibbonPatch final : public PatchType<GBRibbonPatch> {
  public:
   static constexpr const char* kType = "gb-ribbons";  // the scene-format type name
   // The largest ribbon degree and layer count the gb-ribbons format accepts (the codec's limits;
@@ -48,8 +48,6 @@ class GBRibbonPatch final : public Patch {
   GBRibbonPatch(ConcavePolygonDomain domain,
                 const std::vector<std::vector<std::vector<Vec3>>>& ribbons);
 
-  std::unique_ptr<Patch> clone() const override { return std::make_unique<GBRibbonPatch>(*this); }
-  std::string type() const override { return kType; }
   const Domain& domain() const override { return domain_; }
   const ConcavePolygonDomain& polygon() const { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
