@@ -50,6 +50,14 @@ template <class J>
   return product(w_prev, reciprocal(sum(w_prev, w)));
 }
 
+// alpha_i of every side whose bit is set in `sides`, from the side weights w (h or h^2).
+template <class J>
+[[gnu::always_inline]] inline void corner_alphas(int n, const J* w, J* alpha,
+                                                 uint64_t sides = ~uint64_t{0}) {
+  for (int i = 0; i < n; ++i)
+    if (sides >> i & 1u) alpha[i] = corner_alpha(w[i == 0 ? n - 1 : i - 1], w[i]);
+}
+
 // 1 - alpha_next, component by component (the sign of zero as Jet(1.0) - alpha gives it).
 template <class J>
 [[gnu::always_inline]] inline J corner_beta(const J& alpha_next) {

@@ -137,8 +137,7 @@ void GBPatch::basis_regular(Vec2 x, std::span<Jet> out) const {
   const int n = n_, d = d_, l = l_;
   Scratch<Jet, kMaxSides> s, h, alpha;
   params_.evaluate(x, {}, std::span(s.data(), n), std::span(h.data(), n));
-  if (has_corner_weights(d))
-    for (int i = 0; i < n; ++i) alpha[i] = corner_alpha(h[params_.wrap(i - 1)], h[i]);
+  if (has_corner_weights(d)) corner_alphas(n, h.data(), alpha.data());
   for (Jet& j : out) j = Jet();
   Jet total;
   Jet bs_jets[kMaxDegree + 1];

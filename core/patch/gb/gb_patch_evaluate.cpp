@@ -32,8 +32,7 @@ template <class T>
   const bool corners = has_corner_weights(d);
   Scratch<J, kMaxSides> s, h, alpha;
   parameters_at(u, v, s.data(), h.data(), kAllSides);
-  if (corners)
-    for (int i = 0; i < n; ++i) alpha[i] = corner_alpha(h[i == 0 ? n - 1 : i - 1], h[i]);
+  if (corners) corner_alphas(n, h.data(), alpha.data());
   VectorJet<T> S, A0, A, D, Bprev;
   clear(S);
   for (int c = 0; c < 3; ++c) S.c[0][c] = T{} + points_[0][c];
@@ -73,8 +72,7 @@ template <class T>
   const Needs need = needs(ribbons_of_[k], weighted_of_[k]);
   Scratch<J, kMaxSides> s, h, alpha;
   parameters_at(u, v, s.data(), h.data(), need.sides);
-  for (int i = 0; i < n; ++i)
-    if (need.alphas >> i & 1u) alpha[i] = corner_alpha(h[i == 0 ? n - 1 : i - 1], h[i]);
+  corner_alphas(n, h.data(), alpha.data(), need.alphas);
   J w = constant_jet<T>(0);
   for (const Occurrence& o : occurrences_[k]) {
     T g, g1, g2;
@@ -96,8 +94,7 @@ template <class T>
   const bool corners = has_corner_weights(d);
   Scratch<J, kMaxSides> s, h, alpha;
   parameters_at(u, v, s.data(), h.data(), kAllSides);
-  if (corners)
-    for (int i = 0; i < n; ++i) alpha[i] = corner_alpha(h[i == 0 ? n - 1 : i - 1], h[i]);
+  if (corners) corner_alphas(n, h.data(), alpha.data());
   J total = constant_jet<T>(0), first{}, prev{};
   for (int i = 0; i < n; ++i) {
     const BernsteinTableOf<T> bs(d, s[i].f), bh(d, h[i].f);

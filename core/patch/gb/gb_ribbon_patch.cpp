@@ -116,7 +116,7 @@ struct RibbonLocal {
     params.evaluate(x, std::span(lam.data(), n), {}, std::span(h.data(), n));
     Scratch<Jet, GBRibbonPatch::kMaxSides> h2;
     for (int i = 0; i < n; ++i) h2[i] = h[i] * h[i];
-    for (int i = 0; i < n; ++i) alpha[i] = corner_alpha(h2[i == 0 ? n - 1 : i - 1], h2[i]);
+    corner_alphas(n, h2.data(), alpha.data());
   }
 };
 

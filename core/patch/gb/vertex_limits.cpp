@@ -26,9 +26,7 @@ void gb_vertex_basis(const GBPatch& g, int v, std::span<Jet> out) {
   params.evaluate(x, std::span(lambda.data(), n), std::span(s.data(), n), std::span(h.data(), n));
   const int a = params.wrap(v), b = params.wrap(v + 1);
   // alpha_i is smooth at v for every i but b (where it is the 0/0 ratio r above).
-  if (has_corner_weights(d))
-    for (int i = 0; i < n; ++i)
-      if (i != b) alpha[i] = corner_alpha(h[params.wrap(i - 1)], h[i]);
+  if (has_corner_weights(d)) corner_alphas(n, h.data(), alpha.data(), ~(uint64_t{1} << b));
   const auto linear = [&](const Jet& f) {  // the linear part of f at x, evaluated at x + theta
     return Jet(f.fu * theta.x + f.fv * theta.y, f.fu, f.fv, 0, 0, 0);
   };
