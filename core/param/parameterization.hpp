@@ -54,9 +54,11 @@ class Parameterization {
 // cancel (the GB corner weights divide h's by each other). A few sides are summed directly,
 // many through prefix and suffix sums: O(n) for all sides together. J: Jet or JetLanesOf<V>;
 // N >= n + 1.
+// With `scale` given, out[i] is that sum times *scale (weights over their total: h itself).
 template <int N, class J>
 [[gnu::always_inline]] inline void sums_off_side(int n, const J* v, J* out, SideMask sides,
-                                                 const J& zero) {
+                                                 const J& zero, const J* scale = nullptr) {
+  const auto put = [scale](J& o, const J& x) { o = scale ? product(x, *scale) : x; };
   const SideMask all = n >= 64 ? kAllSides : (SideMask{1} << n) - 1;
   const int count = __builtin_popcountll(sides & all);
   if (count * (n - 2) <= 4 * n) {
@@ -66,7 +68,7 @@ template <int N, class J>
       J rest = zero;  // a local, not out[i]: out may alias v as far as the compiler knows
       for (int j = 0; j < n; ++j)
         if (j != prev && j != i) rest = sum(rest, v[j]);
-      out[i] = rest;
+      put(out[i], rest);
     }
     return;
   }
@@ -76,11 +78,11 @@ template <int N, class J>
   suffix[n] = zero;
   for (int k = n - 1; k >= 0; --k) suffix[k] = sum(suffix[k + 1], v[k]);
   for (int i = 1; i < n; ++i)
-    if (sides >> i & 1u) out[i] = sum(prefix[i - 1], suffix[i + 1]);
+    if (sides >> i & 1u) put(out[i], sum(prefix[i - 1], suffix[i + 1]));
   if (sides & 1u) {  // side 0 leaves out v[n-1] and v[0]: the middle run v[1] .. v[n-2]
     J rest = zero;
     for (int j = 1; j < n - 1; ++j) rest = sum(rest, v[j]);
-    out[0] = rest;
+    put(out[0], rest);
   }
 }
 

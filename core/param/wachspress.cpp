@@ -56,11 +56,7 @@ template <class T>
   const J r = reciprocal(total);
   if (lambda)
     for (int i = 0; i < n; ++i) lambda[i] = product(w[i], r);
-  if (h) {
-    sums_off_side<kMaxSides + 1>(n, w.data(), h, sides, zero);  // the weights off side i ...
-    for (int i = 0; i < n; ++i)
-      if (sides >> i & 1u) h[i] = product(h[i], r);  // ... over their total
-  }
+  if (h) sums_off_side<kMaxSides + 1>(n, w.data(), h, sides, zero, &r);  // off side i, over all
   if (s)
     for (int i = 0; i < n; ++i) {
       if (!(sides >> i & 1u)) continue;

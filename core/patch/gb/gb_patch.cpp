@@ -59,8 +59,7 @@ GBPatch::GBPatch(int sides, int degree, std::vector<Vec3> points)
   const int d = d_, l = l_;
   grid_.resize(n_ * l * (d + 1));
   occurrences_.assign(size(), {});
-  ribbons_of_.assign(size(), 0);
-  weighted_of_.assign(size(), 0);
+  std::vector<SideMask> ribbons(size(), 0), weighted(size(), 0);
   for (int i = 0; i < n_; ++i)
     for (int k = 0; k < l; ++k)
       for (int j = 0; j <= d; ++j) {
@@ -69,9 +68,10 @@ GBPatch::GBPatch(int sides, int degree, std::vector<Vec3> points)
         const Mu m = mu(j, k);
         if (m == Mu::Zero) continue;
         occurrences_[s].push_back({i, j, k});
-        ribbons_of_[s] |= SideMask{1} << i;
-        if (m == Mu::Alpha || m == Mu::Beta) weighted_of_[s] |= SideMask{1} << i;
+        ribbons[s] |= SideMask{1} << i;
+        if (m == Mu::Alpha || m == Mu::Beta) weighted[s] |= SideMask{1} << i;
       }
+  for (std::size_t s = 0; s < size(); ++s) needs_.push_back(needs(ribbons[s], weighted[s]));
   update_rows(0);
 }
 

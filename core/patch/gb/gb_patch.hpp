@@ -78,7 +78,8 @@ class GBPatch final : public PatchType<GBPatch> {
   struct Occurrence {  // a grid position (i, j, k) where a stored point has a non-zero weight
     int i, j, k;
   };
-  // The sides whose s, h a set of ribbons needs, and which of them need alpha_i.
+  // The sides whose s, h a set of ribbons needs, and which of them need alpha_i (a ribbon's
+  // weighted points need alpha_i and, for beta_i, alpha_{i+1}).
   struct Needs {
     SideMask sides, alphas;
   };
@@ -120,8 +121,9 @@ class GBPatch final : public PatchType<GBPatch> {
   std::vector<Mu> mu_;          // [k * (d+1) + j]
   std::vector<uint32_t> grid_;  // [(i * l + k) * (d+1) + j] -> stored index
   std::vector<std::vector<Occurrence>> occurrences_;
-  std::vector<SideMask> ribbons_of_;   // bit i: the stored point has a non-zero weight in ribbon i
-  std::vector<SideMask> weighted_of_;  // bit i: ... and that weight is alpha_i or beta_i
+  // The sides phi_k needs, per stored point k: those of the ribbons where it has a non-zero
+  // weight, and of the corner weights where that weight is alpha_i or beta_i.
+  std::vector<Needs> needs_;
   RibbonRows rows_;
 };
 

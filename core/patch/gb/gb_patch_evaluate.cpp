@@ -69,7 +69,7 @@ template <class T>
   assert(k > 0);
   using J = JetOf<T>;
   const int n = n_;
-  const Needs need = needs(ribbons_of_[k], weighted_of_[k]);
+  const Needs& need = needs_[k];
   Scratch<J, kMaxSides> s, h, alpha;
   parameters_at(u, v, s.data(), h.data(), need.sides);
   corner_alphas(n, h.data(), alpha.data(), need.alphas);

@@ -145,9 +145,9 @@ Jet GBRibbonPatch::blends(Vec2 x, std::span<Jet> out) const {
     const Jet& prev = L.lam[i == 0 ? n - 1 : i - 1];
     t.build(L.lam[i], prev, prev + L.lam[i], L.h[i], d, layers_[i]);
     for (int k = 0; k < layers_[i]; ++k) {
-      const Jet hk = binomial_of(m, k) * t.hp(k);
+      const Jet hk = binomial(m, k) * t.hp(k);
       for (int j = 0; j <= d; ++j) {
-        const Jet b = weighted(binomial_of(d, j) * homogeneous(t, j, d - j, m - k - d) * hk,
+        const Jet b = weighted(binomial(d, j) * homogeneous(t, j, d - j, m - k - d) * hk,
                                ribbon_mu(d, j), L.alpha.data(), i, n);
         out[index(i, j, k)] += b;
         sum += b;
@@ -200,9 +200,9 @@ SurfaceJet GBRibbonPatch::evaluate(Vec2 x) const {
       // one-sided limits of homogeneous(), which do not factor; this is rare (boundary
       // samples), so sum term by term as basis() does.
       for (int k = 0; k < l; ++k) {
-        const Jet hk = binomial_of(m, k) * t.hp(k);
+        const Jet hk = binomial(m, k) * t.hp(k);
         for (int j = 0; j <= d; ++j) {
-          const Jet b = weighted(binomial_of(d, j) * homogeneous(t, j, d - j, m - k - d) * hk,
+          const Jet b = weighted(binomial(d, j) * homogeneous(t, j, d - j, m - k - d) * hk,
                                  ribbon_mu(d, j), L.alpha.data(), i, n);
           const Vec3 c = point_at(j, k);
           sx += b * c.x, sy += b * c.y, sz += b * c.z;
@@ -214,14 +214,14 @@ SurfaceJet GBRibbonPatch::evaluate(Vec2 x) const {
     Jet asum(0.0), hsum(0.0);
     for (int j = 0; j <= d; ++j) {
       // homogeneous(t, j, d - j, l - d) off the limit case.
-      A[j] = weighted(
-          binomial_of(d, j) * (t.la(j) * t.lb(d - j) * (l >= d ? t.dp(l - d) : t.rp(d - l))),
-          ribbon_mu(d, j), L.alpha.data(), i, n);
+      A[j] =
+          weighted(binomial(d, j) * (t.la(j) * t.lb(d - j) * (l >= d ? t.dp(l - d) : t.rp(d - l))),
+                   ribbon_mu(d, j), L.alpha.data(), i, n);
       asum += A[j];
     }
     // Rows first: l jet products per coordinate instead of d + 1 (l <= d + 1 in practice).
     for (int k = 0; k < l; ++k) {
-      const Jet Hk = binomial_of(m, k) * t.hp(k) * t.dp(l - 1 - k);
+      const Jet Hk = binomial(m, k) * t.hp(k) * t.dp(l - 1 - k);
       hsum += Hk;
       Jet vx(0.0), vy(0.0), vz(0.0);
       for (int j = 0; j <= d; ++j) {

@@ -7,7 +7,6 @@
 #pragma once
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 #include "core/math/bernstein.hpp"
@@ -18,19 +17,6 @@ namespace pl {
 
 // The largest ribbon degree and layer count the gb-ribbons format accepts.
 inline constexpr int kMaxRibbonDegree = 30, kMaxRibbonLayers = 15;
-
-// binomial(n, k) for n <= kMaxRibbonDegree (the values binomial() gives, which are exact here)
-// without its loop of divisions: a ribbon needs d + 1 + l of them per sample.
-inline double binomial_of(int n, int k) {
-  constexpr int N = std::max(kMaxRibbonDegree, 2 * kMaxRibbonLayers - 1) + 1;
-  static const auto table = [] {
-    std::array<std::array<double, N>, N> t{};
-    for (int a = 0; a < N; ++a)
-      for (int b = 0; b <= a; ++b) t[a][b] = binomial(a, b);
-    return t;
-  }();
-  return n < N ? table[n][k] : binomial(n, k);
-}
 
 // a^0 .. a^top (top <= kCap - 1), each by repeated multiplication from 1 like pow(a, k), so a
 // table entry is bitwise the value pow() gives. Exponents past the table continue the
