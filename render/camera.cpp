@@ -97,6 +97,44 @@ void Camera::frame(const Box& box, double aspect, double margin) {
   if (!orthographic) distance = std::max(distance, scene_radius * 1.05);
 }
 
+void Camera::frame_points(std::span<const Vec3> points, double aspect, double margin) {
+  if (points.empty()) return;
+  Box box;
+  for (const Vec3& p : points) box.add(p);
+  if (!(box.radius() > 1e-9 * (1 + glm::length(box.centre())))) {
+    // Everything at one place (a collapsed patch): show that place in a unit box.
+    const Vec3 c = box.centre();
+    box.add(c - Vec3(1.0));
+    box.add(c + Vec3(1.0));
+    frame(box, aspect, margin);
+    return;
+  }
+  scene_radius = box.radius();
+  const Vec3 f = forward(), u = up(), r = right();
+  // The middle of the extent along right and up, and along the view for the clipping planes.
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (const Vec3& p : points) {
+    const double c[3] = {glm::dot(p, r), glm::dot(p, u), glm::dot(p, f)};
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], c[k]), hi[k] = std::max(hi[k], c[k]);
+  }
+  target = 0.5 * ((lo[0] + hi[0]) * r + (lo[1] + hi[1]) * u + (lo[2] + hi[2]) * f);
+  const double tan_v = std::tan(0.5 * fov_y), tan_h = tan_v * aspect;
+  double need_h = 0, need_d = 0;
+  for (const Vec3& p : points) {
+    const Vec3 q = (p - target) * margin;
+    const double x = std::abs(glm::dot(q, r)), y = std::abs(glm::dot(q, u));
+    const double z = glm::dot(q, f);  // > 0: beyond the target, seen smaller
+    need_h = std::max({need_h, y, x / aspect});
+    need_d = std::max({need_d, x / tan_h - z, y / tan_v - z});
+  }
+  const double floor_d = 1e-6 * scene_radius;
+  distance = std::max(orthographic ? need_h / tan_v : need_d, floor_d);
+  // Perspective: the eye stays in front of every point.
+  if (!orthographic) distance = std::max(distance, 0.5 * (hi[2] - lo[2]) * 1.05 + floor_d);
+  // The clipping planes must enclose the points around the new target.
+  for (const Vec3& p : points) scene_radius = std::max(scene_radius, glm::length(p - target));
+}
+
 Camera preset_camera(ViewPreset preset, const Box& box, double aspect, bool orthographic) {
   Camera c;
   c.orthographic = orthographic;

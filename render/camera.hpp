@@ -7,6 +7,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string>
 
 #include "core/math/vec.hpp"
@@ -56,6 +57,10 @@ struct Camera {
   // corners, scaled about the centre by `margin` (>= 1), are inside the view at this aspect
   // (width / height).
   void frame(const Box& box, double aspect, double margin = 1.08);
+  // The same for a set of points, fitted tightly: aims at the middle of their extent across the
+  // view (not the box centre) and takes the distance at which the farthest-out point touches the
+  // view's edge. A thin patch seen obliquely fills the view instead of its bounding box's corners.
+  void frame_points(std::span<const Vec3> points, double aspect, double margin = 1.08);
 
   double scene_radius = 1;  // set by frame(); sizes the clipping planes
 };

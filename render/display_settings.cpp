@@ -4,6 +4,11 @@
 
 namespace pl {
 
+bool shows_isophote_lines(const DisplaySettings& s) {
+  if (s.base == BaseMode::Isophotes) return true;
+  return s.isophote_lines && (s.base != BaseMode::Zebra || s.isophotes_over_zebra);
+}
+
 DisplaySettings parse_display_mode(const std::string& mode) {
   DisplaySettings s;
   std::optional<std::string> base;  // the token that set a base mode, to report conflicts
@@ -48,10 +53,12 @@ DisplaySettings parse_display_mode(const std::string& mode) {
     start = plus + 1;
   }
   if (isophotes) {
-    if (base)
+    if (base) {
       s.isophote_lines = true;
-    else
+      s.isophotes_over_zebra = s.base == BaseMode::Zebra;
+    } else {
       s.base = BaseMode::Isophotes;
+    }
   }
   return s;
 }

@@ -18,6 +18,9 @@ struct DisplaySettings {
 
   // Overlays, combinable with any base mode.
   bool isophote_lines = false;  // implied by BaseMode::Isophotes
+  // Zebra stripes are reflection lines already: isophote lines over them (black on black) are
+  // left out unless asked for here ("zebra+isophotes" on the command line asks).
+  bool isophotes_over_zebra = false;
   bool control_net = false;
   bool network_curves = false;
   bool borders = false;  // patch boundaries
@@ -49,9 +52,13 @@ struct DisplaySettings {
   bool transparent = false;  // clear to alpha 0 instead of the studio backdrop
 };
 
+// Whether the isophote lines are drawn over the base mode (always in the isophote mode).
+bool shows_isophote_lines(const DisplaySettings& s);
+
 // Parses "shaded", "isophotes", "zebra", "mean", "gaussian", "kmax", "kmin", "control-net",
 // "network", "borders", "combs", combined with '+'. At most one of shaded/zebra/curvature is the
-// base; "isophotes" is the base when alone and an overlay otherwise. Throws std::invalid_argument
+// base; "isophotes" is the base when alone and an overlay otherwise (over zebra too, when named
+// with it). Throws std::invalid_argument
 // with a message naming the offending token.
 DisplaySettings parse_display_mode(const std::string& mode);
 

@@ -195,19 +195,49 @@ void GpuScene::update_geometry(const DrawScene& scene) {
       if (surfaces_[i].revision() != scene.surfaces[i].revision)
         surfaces_[i].update(scene.surfaces[i]);
   }
-  // Control net: segments as GL_LINES pairs; points tagged with their kind.
-  std::vector<Vec3> lines;
-  for (const auto& s : scene.net.segments) {
-    lines.push_back(scene.net.points.at(s[0]));
-    lines.push_back(scene.net.points.at(s[1]));
+  // Control net: segments as GL_LINES pairs, split by role; points tagged with their style,
+  // derived ones first.
+  const ControlNet& net = scene.net;
+  std::vector<Vec3> lines, derived_lines;
+  for (const auto& s : net.segments) {
+    const bool derived =
+        net.role(s[0]) == PointRole::Derived || net.role(s[1]) == PointRole::Derived;
+    auto& out = derived ? derived_lines : lines;
+    out.push_back(net.points.at(s[0]));
+    out.push_back(net.points.at(s[1]));
   }
   net_lines_.set(lines, {});
-  std::vector<float> kinds;
-  for (ControlPointKind k : scene.net.kinds) kinds.push_back(static_cast<float>(k));
-  net_points_.set(scene.net.points, kinds);
+  derived_net_lines_.set(derived_lines, {});
+  std::vector<Vec3> points;
+  std::vector<float> tags;
+  for (PointRole role : {PointRole::Derived, PointRole::Editable})
+    for (std::size_t i = 0; i < net.points.size(); ++i) {
+      if (net.role(i) != role) continue;
+      const ControlPointKind kind =
+          i < net.kinds.size() ? net.kinds[i] : ControlPointKind::Boundary;
+      const int tag = point_style_tag(kind, role);
+      points.push_back(net.points[i]);
+      tags.push_back(static_cast<float>(tag));
+    }
+  net_points_.set(points, tags);
+  point_styles_ = point_style_bits(net);
+  std::vector<Vec3> arrow_ends;
+  std::vector<float> arrow_tags;
+  for (const Arrow& a : scene.arrows) {
+    arrow_ends.push_back(a.base);
+    arrow_ends.push_back(a.tip);
+    arrow_tags.insert(arrow_tags.end(), 2, static_cast<float>(a.kind));
+  }
+  arrows_.set(arrow_ends, arrow_tags);
+  arrow_kinds_ = arrow_kind_bits(scene.arrows);
+  set_highlights(scene.highlights);
   curves_.set(polylines(scene.network_curves), {});
   const Box box = scene.bounds();
   diagonal_ = box.empty() ? 0.0 : glm::length(box.hi - box.lo);
+}
+
+void GpuScene::set_highlights(const std::vector<Polyline>& highlights) {
+  highlights_.set(polylines(highlights), {});
 }
 
 void GpuScene::update_curves(std::span<const CurvatureComb* const> network_combs,

@@ -30,9 +30,9 @@ class GpuSurface {
   std::vector<float> scratch_;  // reused conversion buffer: no allocation per drag update
 };
 
-// Line segments (GL_LINES pairs) or points with a per-vertex float tag (the point kind) and a
-// per-vertex offset (comb teeth: the shader draws the vertex at position + scale * offset, so a
-// new comb scale needs no upload). Missing tags and offsets are not uploaded: the attribute's
+// Line segments (GL_LINES pairs) or points with a per-vertex float tag (point style, arrow kind)
+// and a per-vertex offset (comb teeth: the shader draws the vertex at position + scale * offset, so
+// a new comb scale needs no upload). Missing tags and offsets are not uploaded: the attribute's
 // array is disabled and the shader reads the constant 0 set at draw time.
 class GpuPrimitives {
  public:
@@ -75,8 +75,11 @@ class GpuScene {
   // Uploads what changed since the last call (surfaces by revision; overlays always, they are
   // small): update_geometry, the borders and the combs.
   void update(const DrawScene& scene);
-  // Surfaces, control net and network curves only: the borders and combs stay as they are.
+  // Surfaces, control net, arrows, network curves and highlights only: the borders and combs stay
+  // as they are.
   void update_geometry(const DrawScene& scene);
+  // Only the highlighted curves (the editor's picked edge).
+  void set_highlights(const std::vector<Polyline>& highlights);
   // Borders (the points of `borders`) and combs held outside a DrawScene (the editor keeps them
   // once for both densities of a view); a border comb without teeth is a border without a comb.
   // Pointers are read during the call only.
@@ -87,8 +90,18 @@ class GpuScene {
   void update_surface(std::size_t i, const SurfaceMesh& mesh) { surfaces_.at(i).update(mesh); }
 
   const std::vector<GpuSurface>& surfaces() const { return surfaces_; }
+  // Net lines between editable points, and those touching a derived point.
   const GpuPrimitives& net_lines() const { return net_lines_; }
+  const GpuPrimitives& derived_net_lines() const { return derived_net_lines_; }
+  // Points tagged with point_style_tag(), derived ones first so editable ones are drawn over them.
   const GpuPrimitives& net_points() const { return net_points_; }
+  // Arrows as GL_LINES pairs (base, tip) tagged with their ArrowKind.
+  const GpuPrimitives& arrows() const { return arrows_; }
+  const GpuPrimitives& highlights() const { return highlights_; }
+  // Which point styles (bit point_style_tag) and arrow kinds (bit ArrowKind) the scene has: the
+  // entries of its point key.
+  uint32_t point_styles() const { return point_styles_; }
+  uint32_t arrow_kinds() const { return arrow_kinds_; }
   const GpuPrimitives& network_curves() const { return curves_; }
   const GpuPrimitives& borders() const { return borders_; }
   const GpuCombs& network_combs() const { return network_combs_; }
@@ -106,7 +119,9 @@ class GpuScene {
                  std::span<const CurvatureComb* const> borders,
                  const std::vector<bool>& border_on_network);
   std::vector<GpuSurface> surfaces_;
-  GpuPrimitives net_lines_, net_points_, curves_, borders_;
+  GpuPrimitives net_lines_, derived_net_lines_, net_points_, arrows_, curves_, borders_,
+      highlights_;
+  uint32_t point_styles_ = 0, arrow_kinds_ = 0;
   GpuCombs network_combs_, border_combs_;
   double diagonal_ = 0, comb_scale_ = 0, comb_reference_length_ = 0;
 };

@@ -1,5 +1,5 @@
-// The curvature colour legend burned into the final image: a vertical bar of color_map() with
-// numbered ticks at lo, lo/2, 0, hi/2, hi and a title. GL-free.
+// The colour legend burned into the final image: an opaque panel with a vertical bar of
+// color_map(), numbered ticks at lo, lo/2, 0, hi/2, hi and a title, in the label font. GL-free.
 #pragma once
 
 #include <string>
@@ -9,18 +9,37 @@
 
 namespace pl {
 
+// What a legend shows: "mean curvature" over the frame's range, or the comparison's distance.
+struct LegendSpec {
+  std::string title;
+  ColorRange range;
+};
+
 // Tick labels, e.g. "-1.25", "0", "3.2e-05": 3 significant digits, no trailing noise.
 std::string format_tick(double value);
 
-// Draws the legend at the right edge of `image`, vertically centred. `scale` is the integer
-// text scale (>= 1); everything else is sized from it.
-void draw_legend(Image& image, const ColorRange& range, const std::string& title, int scale);
+// The UI scale of burned-in text and panels for an image of this size (text.hpp's unit: 1 is a
+// 10 px font): readable on 800 px, not shouting on 4096 px; continuous, so text scales exactly.
+double legend_scale(int width, int height);
 
-// Width in pixels the legend takes at the right edge, margins included, so panels can be laid
-// out beside it.
-int legend_reserved_width(const ColorRange& range, const std::string& title, int scale);
+// The legend panel's size in pixels for a bar of bar_height pixels.
+int legend_width(const LegendSpec& legend, double scale);
+int legend_height(double scale, int bar_height);
+// The bar height a legend gets in an image of this height: half of it, at least 40 px.
+int legend_bar_height(int image_height);
 
-// The text scale for an image of this size: readable on 800 px, not shouting on 4096 px.
-int legend_scale(int width, int height);
+// Draws the panel with its top-left corner at (x, y).
+void draw_legend_at(Image& image, const LegendSpec& legend, double scale, int x, int y,
+                    int bar_height);
+
+// The legend at the right edge of `image`, vertically centred, and the width it takes there
+// (margins included), so panels can be laid out beside it.
+void draw_legend(Image& image, const ColorRange& range, const std::string& title, double scale);
+int legend_reserved_width(const ColorRange& range, const std::string& title, double scale);
+
+// The margin around legends and keys.
+inline int panel_margin(double scale) {
+  return static_cast<int>(8 * scale + 0.5);
+}
 
 }  // namespace pl

@@ -10,9 +10,8 @@ constexpr int kColorMapEntries = 1024;
 // Pulls overlay lines in front of the triangles they lie on; the triangles are chords of the
 // curved surface, so a line sampled on the exact surface can sit slightly behind them.
 constexpr float kOverlayDepthBias = 4e-4f;
-// How visible hidden parts of the control net are: enough to read the structure behind the
-// surface, faint enough not to be confused with the visible part.
-constexpr float kHiddenAlpha = 0.22f;
+// Point sprites are pulled towards the eye by this many radii (point.vert.glsl).
+constexpr float kPointDepthPush = 3.0f;
 // Teeth longer than this many reference lengths (the automatic length at the reference
 // curvature, times the user's multiplier) are cut to it: near a cusp the curvature grows
 // without bound, and one tooth across the whole picture hides everything else. The envelope is
@@ -23,12 +22,22 @@ void set(GLint loc, const Vec3& v) {
   glUniform3f(loc, static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z));
 }
 
+void set(GLint loc, const Rgb& c) {
+  glUniform3f(loc, c[0], c[1], c[2]);
+}
+
+template <std::size_t N>
+void set(GLint loc, const std::array<Rgb, N>& colors) {
+  glUniform3fv(loc, static_cast<GLsizei>(N), colors[0].data());
+}
+
 }  // namespace
 
 SceneRenderer::SceneRenderer()
     : surface_("surface.vert.glsl", "", "surface.frag.glsl"),
       lines_("line.vert.glsl", "line.geom.glsl", "line.frag.glsl"),
-      points_("line.vert.glsl", "point.geom.glsl", "point.frag.glsl"),
+      points_("point.vert.glsl", "point.geom.glsl", "point.frag.glsl"),
+      arrows_("line.vert.glsl", "arrow.geom.glsl", "arrow.frag.glsl"),
       backdrop_("backdrop.vert.glsl", "", "backdrop.frag.glsl"),
       tint_("tint.vert.glsl", "", "tint.frag.glsl") {
   const std::vector<float> table = color_map_table(kColorMapEntries);
@@ -56,6 +65,8 @@ void SceneRenderer::draw(const GpuScene& scene, const Camera& camera,
   const Vec3 f = camera.forward(), u = camera.up(), r = camera.right();
   const Vec3 key = glm::normalize(-0.55 * f + 0.60 * u - 0.50 * r);
   const Vec3 fill = glm::normalize(-0.70 * f - 0.30 * u + 0.65 * r);
+  // The shaded mode's key grazes more (about 70 degrees off the view axis) for contrast.
+  const Vec3 shade = glm::normalize(-0.35 * f + 0.62 * u - 0.70 * r);
 
   surface_.use();
   glUniformMatrix4fv(surface_.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
@@ -64,9 +75,10 @@ void SceneRenderer::draw(const GpuScene& scene, const Camera& camera,
   set(surface_.uniform("u_eye"), camera.eye());
   set(surface_.uniform("u_key_light"), key);
   set(surface_.uniform("u_fill_light"), fill);
+  set(surface_.uniform("u_shade_light"), shade);
   set(surface_.uniform("u_camera_up"), u);
   set(surface_.uniform("u_camera_forward"), f);
-  glUniform1i(surface_.uniform("u_isophote_lines"), settings.isophote_lines ? 1 : 0);
+  glUniform1i(surface_.uniform("u_isophote_lines"), shows_isophote_lines(settings) ? 1 : 0);
   set(surface_.uniform("u_isophote_direction"), glm::normalize(settings.isophote_direction));
   glUniform1f(surface_.uniform("u_isophote_count"), float(settings.isophote_count));
   glUniform1f(surface_.uniform("u_isophote_width"),
@@ -90,9 +102,11 @@ void SceneRenderer::draw(const GpuScene& scene, const Camera& camera,
   const bool has_network = !scene.network_curves().empty();
   const bool borders = settings.borders || (lone_combs && !has_network);
   const bool network = settings.network_curves || (lone_combs && has_network);
-  if (borders) draw_lines(scene.borders(), vp, v, {0.12f, 0.13f, 0.16f, 0.85f}, 1.4f * s, false);
+  // Curves behind a surface show faintly, as every overlay does: a closed shape's back is read,
+  // not confused with its front.
+  if (borders) draw_lines(scene.borders(), vp, v, palette::kBorder, 0.85f, 1.4f * s, true);
   if (network)
-    draw_lines(scene.network_curves(), vp, v, {0.05f, 0.30f, 0.62f, 1.0f}, 2.6f * s, false);
+    draw_lines(scene.network_curves(), vp, v, palette::kNetworkCurve, 1.0f, 2.6f * s, true);
   if (settings.combs) {
     const double per_curvature =
         settings.comb_length.value_or(scene.comb_scale()) * settings.comb_scale;
@@ -101,29 +115,59 @@ void SceneRenderer::draw(const GpuScene& scene, const Camera& camera,
     if (borders) draw_combs(scene.border_combs(), network, vp, v, float(per_curvature), float(cap));
     if (network) draw_combs(scene.network_combs(), false, vp, v, float(per_curvature), float(cap));
   }
-  if (settings.control_net) {
-    draw_lines(scene.net_lines(), vp, v, {0.20f, 0.22f, 0.26f, 0.9f}, 1.3f * s, true);
-    points_.use();
-    glUniformMatrix4fv(points_.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
-    glUniform2f(points_.uniform("u_viewport_size"), float(v.width), float(v.height));
-    glUniform1f(points_.uniform("u_size"), 9.0f * s);
-    glUniform1f(points_.uniform("u_depth_bias"), 0.0f);
-    // Boundary, Inner, Twin, Central: the core's ControlPointKind order.
-    const float kinds[12] = {0.95f, 0.62f, 0.10f, 0.20f, 0.55f, 0.95f,
-                             0.85f, 0.25f, 0.75f, 0.20f, 0.75f, 0.35f};
-    glUniform3fv(points_.uniform("u_kind_colors"), 4, kinds);
-    // Points are drawn over everything: they are what a designer grabs, and a depth-tested
-    // disc is cut in half wherever the surface passes near its point. The net's lines still
-    // show what lies behind the surface.
-    glDisable(GL_DEPTH_TEST);
-    glUniform1f(points_.uniform("u_alpha"), 1.0f);
-    scene.net_points().draw(GL_POINTS);
-    glEnable(GL_DEPTH_TEST);
-    glDepthMask(GL_TRUE);
-  }
+  if (settings.control_net) draw_net(scene, camera, vp, v);
+  // Highlights last: what the user is pointed at is never under another overlay.
+  draw_lines(scene.highlights(), vp, v, palette::kHighlight, 1.0f, 4.0f * s, true);
   glDisable(GL_BLEND);
   glBindVertexArray(0);
   gl::check_error("SceneRenderer::draw");
+}
+
+void SceneRenderer::draw_net(const GpuScene& scene, const Camera& camera, const glm::mat4& vp,
+                             const Viewport& v) const {
+  const float s = static_cast<float>(v.pixel_scale);
+  draw_lines(scene.derived_net_lines(), vp, v, palette::kDerivedNetLine, 0.8f, 1.0f * s, true);
+  draw_lines(scene.net_lines(), vp, v, palette::kNetLine, 0.9f, 1.3f * s, true);
+  glDepthMask(GL_FALSE);  // overlays never hide each other's parts
+  if (!scene.arrows().empty()) {
+    arrows_.use();
+    glUniformMatrix4fv(arrows_.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
+    glUniform1f(arrows_.uniform("u_offset_scale"), 0.0f);
+    glUniform1f(arrows_.uniform("u_offset_max"), 0.0f);
+    glUniform2f(arrows_.uniform("u_viewport_size"), float(v.width), float(v.height));
+    glUniform1f(arrows_.uniform("u_width"), kArrowWidth * s);
+    glUniform1f(arrows_.uniform("u_head"), kArrowHead * s);
+    glUniform1f(arrows_.uniform("u_depth_bias"), kOverlayDepthBias);
+    set(arrows_.uniform("u_colors"),
+        std::array<Rgb, 2>{palette::kTangentArrow, palette::kTwistArrow});
+    for (const bool hidden : {true, false}) {
+      glDepthFunc(hidden ? GL_GREATER : GL_LEQUAL);
+      glUniform1f(arrows_.uniform("u_alpha"), hidden ? kHiddenAlpha : 1.0f);
+      scene.arrows().draw(GL_LINES);
+    }
+  }
+  if (!scene.net_points().empty()) {
+    const double aspect = double(v.width) / double(v.height);
+    const glm::mat4 view(camera.view()), projection(camera.projection(aspect));
+    points_.use();
+    glUniformMatrix4fv(points_.uniform("u_view"), 1, GL_FALSE, glm::value_ptr(view));
+    glUniformMatrix4fv(points_.uniform("u_projection"), 1, GL_FALSE, glm::value_ptr(projection));
+    glUniform2f(points_.uniform("u_viewport_size"), float(v.width), float(v.height));
+    glUniform1f(points_.uniform("u_size"), kPointSize * s);
+    glUniform1f(points_.uniform("u_derived_scale"), kDerivedPointScale);
+    glUniform1f(points_.uniform("u_depth_push"), kPointDepthPush);
+    set(points_.uniform("u_kind_colors"), palette::kPointKinds);
+    set(points_.uniform("u_outline"), palette::kPointOutline);
+    set(points_.uniform("u_derived_fill"), palette::kDerivedPointFill);
+    // Points behind a surface first, faded, then the visible ones.
+    for (const bool hidden : {true, false}) {
+      glDepthFunc(hidden ? GL_GREATER : GL_LEQUAL);
+      glUniform1f(points_.uniform("u_alpha"), hidden ? kHiddenPointAlpha : 1.0f);
+      scene.net_points().draw(GL_POINTS);
+    }
+  }
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_TRUE);
 }
 
 void SceneRenderer::draw_backdrop(const Viewport& v) const {
@@ -174,8 +218,8 @@ void SceneRenderer::draw_guides(const GpuPrimitives& lines, const Camera& camera
   glDepthFunc(GL_LEQUAL);
   glEnable(GL_BLEND);
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  const float c[4] = {color[0], color[1], color[2], color[3]};
-  draw_lines(lines, vp, v, c, width * float(v.pixel_scale), show_hidden);
+  draw_lines(lines, vp, v, {color[0], color[1], color[2]}, color[3], width * float(v.pixel_scale),
+             show_hidden);
   glDisable(GL_BLEND);
   glBindVertexArray(0);
   gl::check_error("SceneRenderer::draw_guides");
@@ -189,14 +233,14 @@ void SceneRenderer::draw_combs(const GpuCombs& combs, bool own_only, const glm::
   // thin and light so dense combs do not turn into a solid band, the envelope stronger: it is
   // what the eye follows. Parts behind a surface show faintly, as the control net does, since
   // teeth often pierce the surface they describe.
-  draw_lines(combs.teeth, vp, v, {0.00f, 0.55f, 0.50f, 0.55f}, 1.0f * s, true, offset_scale,
+  draw_lines(combs.teeth, vp, v, palette::kCombTeeth, 0.55f, 1.0f * s, true, offset_scale,
              offset_max, own_only ? combs.own_teeth : -1);
-  draw_lines(combs.envelope, vp, v, {0.00f, 0.45f, 0.40f, 0.95f}, 1.8f * s, true, offset_scale,
+  draw_lines(combs.envelope, vp, v, palette::kCombEnvelope, 0.95f, 1.8f * s, true, offset_scale,
              offset_max, own_only ? combs.own_envelope : -1);
 }
 
 void SceneRenderer::draw_lines(const GpuPrimitives& lines, const glm::mat4& vp, const Viewport& v,
-                               const float (&color)[4], float width, bool show_hidden,
+                               const Rgb& color, float alpha, float width, bool show_hidden,
                                float offset_scale, float offset_max, GLsizei count) const {
   if (lines.empty() || count == 0) return;
   lines_.use();
@@ -209,11 +253,11 @@ void SceneRenderer::draw_lines(const GpuPrimitives& lines, const glm::mat4& vp, 
   glDepthMask(GL_FALSE);  // overlays never hide each other's parts
   if (show_hidden) {
     glDepthFunc(GL_GREATER);
-    glUniform4f(lines_.uniform("u_color"), color[0], color[1], color[2], color[3] * kHiddenAlpha);
+    glUniform4f(lines_.uniform("u_color"), color[0], color[1], color[2], alpha * kHiddenAlpha);
     lines.draw(GL_LINES, count);
     glDepthFunc(GL_LEQUAL);
   }
-  glUniform4f(lines_.uniform("u_color"), color[0], color[1], color[2], color[3]);
+  glUniform4f(lines_.uniform("u_color"), color[0], color[1], color[2], alpha);
   lines.draw(GL_LINES, count);
   glDepthMask(GL_TRUE);
 }

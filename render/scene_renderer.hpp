@@ -10,6 +10,7 @@
 #include "render/display_settings.hpp"
 #include "render/gl_objects.hpp"
 #include "render/gpu_scene.hpp"
+#include "render/palette.hpp"
 
 namespace pl {
 
@@ -19,6 +20,15 @@ struct Viewport {
   // 1000 px one.
   double pixel_scale = 1.0;
 };
+
+// Sizes of the overlays in pixels at pixel_scale 1 (shared with the point key).
+inline constexpr float kPointSize = 10.0f;          // an editable point's width
+inline constexpr float kDerivedPointScale = 0.85f;  // a derived point's width, relative
+inline constexpr float kArrowWidth = 1.8f, kArrowHead = 11.0f;
+// How visible the parts behind a surface are: enough to read what is there, faint enough not to
+// be taken for the visible part.
+inline constexpr float kHiddenAlpha = 0.22f;
+inline constexpr float kHiddenPointAlpha = 0.3f;
 
 class SceneRenderer {
  public:
@@ -47,12 +57,15 @@ class SceneRenderer {
   // offset_scale and offset_max place comb vertices (see line.vert.glsl); 0 for plain lines.
   // count: the first vertices only (all when negative).
   void draw_lines(const GpuPrimitives& lines, const glm::mat4& vp, const Viewport& v,
-                  const float (&color)[4], float width, bool show_hidden, float offset_scale = 0.0f,
-                  float offset_max = 0.0f, GLsizei count = -1) const;
+                  const Rgb& color, float alpha, float width, bool show_hidden,
+                  float offset_scale = 0.0f, float offset_max = 0.0f, GLsizei count = -1) const;
+  // The control net: lines, derivative arrows and points, each faded where a surface hides it.
+  void draw_net(const GpuScene& scene, const Camera& camera, const glm::mat4& vp,
+                const Viewport& v) const;
   // own_only: the combs' first own_teeth / own_envelope vertices (GpuCombs).
   void draw_combs(const GpuCombs& combs, bool own_only, const glm::mat4& vp, const Viewport& v,
                   float offset_scale, float offset_max) const;
-  gl::Program surface_, lines_, points_, backdrop_, tint_;
+  gl::Program surface_, lines_, points_, arrows_, backdrop_, tint_;
   gl::VertexArray empty_vao_;  // the backdrop has no attributes, but core profiles need a VAO
   gl::Texture color_map_;
 };

@@ -8,10 +8,11 @@ uniform int u_base;  // 0 shaded, 1 isophotes, 2 zebra, 3 curvature
 uniform vec3 u_eye;
 uniform vec3 u_key_light;   // unit, towards the light; fixed to the camera (studio lighting)
 uniform vec3 u_fill_light;
+uniform vec3 u_shade_light;  // unit: the shaded mode's key, more oblique for contrast
 uniform vec3 u_camera_up;
 uniform vec3 u_camera_forward;
 
-uniform bool u_isophote_lines;
+uniform bool u_isophote_lines;  // the overlay (the isophote mode always draws its lines)
 uniform vec3 u_isophote_direction;  // unit, fixed in the model
 uniform float u_isophote_count;
 uniform float u_isophote_width;  // pixels
@@ -41,6 +42,19 @@ vec3 lit(vec3 albedo_linear, vec3 n, vec3 view, float specular) {
   vec3 h = normalize(u_key_light + view);
   float spec = pow(max(dot(n, h), 0.0), 60.0) * specular;
   return albedo_linear * (ambient + 0.85 * key + 0.25 * fill) + vec3(spec);
+}
+
+// The plain shaded mode: a dark ambient and an oblique key, so that a gently curved patch facing
+// the camera still shows a clear gradient (a light from the eye would make it uniform grey), and
+// a sharper highlight that follows the curvature.
+vec3 shaded(vec3 albedo_linear, vec3 n, vec3 view) {
+  float hemi = 0.5 + 0.5 * dot(n, u_camera_up);
+  vec3 ambient = mix(vec3(0.05, 0.05, 0.06), vec3(0.17, 0.18, 0.20), hemi);
+  float key = max(dot(n, u_shade_light), 0.0);
+  float fill = max(dot(n, u_fill_light), 0.0);
+  vec3 h = normalize(u_shade_light + view);
+  float spec = pow(max(dot(n, h), 0.0), 48.0) * 0.35;
+  return albedo_linear * (ambient + 1.05 * key + 0.22 * fill) + vec3(spec);
 }
 
 // Antialiased coverage of lines at the integers of s, `width` pixels wide.
@@ -79,9 +93,19 @@ void main() {
     float dark = 1.0 - smoothstep(0.5 * u_zebra_width - w, 0.5 * u_zebra_width + w, g);
     vec3 base = to_srgb(lit(to_linear(albedo), n, view, 0.0) * 0.35 + 0.65);
     color = mix(base, vec3(0.06, 0.07, 0.09), dark);
+  } else if (u_base == 1) {
+    // Isophotes: the bands between the lines in steps of grey from light (normal towards the
+    // light direction) to dark, unlit by the camera, so the picture is the light pattern alone
+    // and reads differently from the shaded mode; every other band a little darker, so that
+    // neighbouring bands stay apart.
+    float angle = acos(clamp(dot(n, u_isophote_direction), -1.0, 1.0));
+    float band = floor(angle / 3.14159265 * u_isophote_count);
+    float t = (band + 0.5) / u_isophote_count;
+    vec3 light = gl_FrontFacing ? vec3(0.98, 0.98, 0.99) : vec3(0.99, 0.90, 0.83);
+    vec3 dark = gl_FrontFacing ? vec3(0.28, 0.31, 0.37) : vec3(0.42, 0.24, 0.16);
+    color = mix(light, dark, t) * (mod(band, 2.0) == 1.0 ? 0.93 : 1.0);
   } else {
-    float spec = u_base == 1 ? 0.10 : 0.28;
-    color = to_srgb(lit(to_linear(albedo), n, view, spec));
+    color = to_srgb(shaded(to_linear(albedo), n, view));
   }
 
   if (u_base == 1 || u_isophote_lines) {

@@ -1,6 +1,7 @@
 #include "app/cli/cli.hpp"
 
 #include <array>
+#include <csignal>
 #include <exception>
 
 #include "app/cli/arguments.hpp"
@@ -51,6 +52,9 @@ void print_help(std::ostream& os) {
 }  // namespace
 
 int run_cli(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
+  // Past a file size limit (ulimit -f) a write then fails with EFBIG, which is reported with the
+  // target's name, instead of SIGXFSZ killing the process mid-write.
+  std::signal(SIGXFSZ, SIG_IGN);
   if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
     print_help(out);
     return kExitOk;

@@ -1,40 +1,66 @@
 #include "app/cli/draw_scene_builder.hpp"
 
-#include "core/patch/bezier_patch.hpp"
+#include <map>
+
+#include "core/patch/control_net_topology.hpp"
 #include "core/patch/side_curve.hpp"
 
 namespace pl {
 
 namespace {
 
-uint32_t add_point(ControlNet& net, const Vec3& p, ControlPointKind kind) {
+uint32_t add_point(ControlNet& net, const Vec3& p, ControlPointKind kind, PointRole role) {
   net.points.push_back(p);
   net.kinds.push_back(kind);
+  net.roles.push_back(role);
   return static_cast<uint32_t>(net.points.size() - 1);
 }
 
-// A tensor-product Bézier net: every point, and the rows and columns of the grid.
-void add_bezier_net(ControlNet& net, const BezierPatch& b) {
-  const int m = b.degree_u(), n = b.degree_v();
-  const auto base = static_cast<uint32_t>(net.points.size());
-  for (std::size_t k = 0; k < b.size(); ++k) add_point(net, b.control_point(k), b.kind(k));
-  auto id = [&](int i, int j) { return base + static_cast<uint32_t>(i * (n + 1) + j); };
-  for (int i = 0; i <= m; ++i)
-    for (int j = 0; j <= n; ++j) {
-      if (i < m) net.segments.push_back({id(i, j), id(i + 1, j)});
-      if (j < n) net.segments.push_back({id(i, j), id(i, j + 1)});
-    }
+// Exact positions of the points already in the net (the network's), so that a face patch's
+// boundary points, which are copies of them, join the network's points instead of doubling them.
+using PointIndex = std::map<std::array<double, 3>, uint32_t>;
+
+std::array<double, 3> key(const Vec3& p) {
+  return {p.x, p.y, p.z};
 }
 
 }  // namespace
 
+Polyline curve_polyline(const BezierCurve& c, int segments) {
+  Polyline l;
+  l.reserve(segments + 1);
+  for (int i = 0; i <= segments; ++i) l.push_back(c.point(double(i) / segments));
+  return l;
+}
+
+Polyline edge_polyline(const Network& network, int e, int segments) {
+  return curve_polyline(network.edge_curve(e), segments);
+}
+
+void append_patch_net(DrawScene& d, const Patch& p, PointRole role,
+                      const std::map<std::array<double, 3>, uint32_t>* shared) {
+  const ControlNetTopology t = control_net_topology(p);
+  std::vector<uint32_t> id(p.size(), 0);
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    if (t.is_vector[k]) continue;
+    if (shared) {
+      const auto it = shared->find(key(p.control_point(k)));
+      if (it != shared->end()) {
+        id[k] = it->second;
+        continue;
+      }
+    }
+    id[k] = add_point(d.net, p.control_point(k), p.kind(k), role);
+  }
+  for (const auto& s : t.segments) d.net.segments.push_back({id[s[0]], id[s[1]]});
+  for (const DerivativeArrow& a : t.arrows)
+    d.arrows.push_back({p.control_point(a.base), arrow_tip(p, a), a.kind});
+}
+
 std::vector<Polyline> network_polylines(const Network& network) {
   std::vector<Polyline> lines;
-  for (std::size_t e = 0; e < network.edges.size(); ++e) {
-    const BezierCurve c = network.edge_curve(static_cast<int>(e));
-    Polyline& l = lines.emplace_back();
-    for (int i = 0; i <= kCurveSegments; ++i) l.push_back(c.point(double(i) / kCurveSegments));
-  }
+  for (std::size_t e = 0; e < network.edges.size(); ++e)
+    lines.push_back(edge_polyline(network, static_cast<int>(e)));
   return lines;
 }
 
@@ -66,16 +92,19 @@ DrawScene build_draw_scene(const Scene& scene, const SceneSurfaces& surfaces, in
       }
     }
   }
+  PointIndex network_points;
   if (scene.network) {
     const Network& net = *scene.network;
     // The network's own control polygon: vertices and edge handles, what a designer drags.
     std::vector<uint32_t> vertex_ids;
-    for (const Vec3& v : net.vertices)
-      vertex_ids.push_back(add_point(d.net, v, ControlPointKind::Boundary));
-    for (std::size_t e = 0; e < net.edges.size(); ++e) {
-      const NetworkEdge& edge = net.edges[e];
-      const uint32_t h1 = add_point(d.net, edge.handles[0], ControlPointKind::Boundary);
-      const uint32_t h2 = add_point(d.net, edge.handles[1], ControlPointKind::Boundary);
+    auto add = [&](const Vec3& p) {
+      const uint32_t id = add_point(d.net, p, ControlPointKind::Boundary, PointRole::Editable);
+      network_points.emplace(key(p), id);
+      return id;
+    };
+    for (const Vec3& v : net.vertices) vertex_ids.push_back(add(v));
+    for (const NetworkEdge& edge : net.edges) {
+      const uint32_t h1 = add(edge.handles[0]), h2 = add(edge.handles[1]);
       d.net.segments.push_back({vertex_ids.at(edge.v[0]), h1});
       d.net.segments.push_back({h1, h2});
       d.net.segments.push_back({h2, vertex_ids.at(edge.v[1])});
@@ -83,18 +112,12 @@ DrawScene build_draw_scene(const Scene& scene, const SceneSurfaces& surfaces, in
     d.network_curves = network_polylines(net);
     if (comb_teeth > 0) d.network_combs = network_combs(net, comb_teeth);
   }
-  for (const SceneSurface& s : surfaces.surfaces) {
-    const Patch& p = s.evaluator->patch();
-    if (const auto* b = dynamic_cast<const BezierPatch*>(&p)) {
-      add_bezier_net(d.net, *b);
-      continue;
-    }
-    // Other patch types have no grid to draw: show their points by kind. On network faces the
-    // boundary points are the network's, already drawn above.
-    for (std::size_t k = 0; k < p.size(); ++k)
-      if (s.face < 0 || p.kind(k) != ControlPointKind::Boundary)
-        add_point(d.net, p.control_point(k), p.kind(k));
-  }
+  // Explicit patches once each (a Catmull–Clark surface is several surfaces of one patch); their
+  // points are the user's. A network face's points are derived from the network, except the
+  // boundary points that are the network's own.
+  for (const ScenePatch& p : scene.patches) append_patch_net(d, *p.patch, PointRole::Editable);
+  for (const SceneSurface& s : surfaces.surfaces)
+    if (s.face >= 0) append_patch_net(d, s.evaluator->patch(), PointRole::Derived, &network_points);
   return d;
 }
 

@@ -4,6 +4,9 @@
 // the renderer never sees patch classes. The curve helpers below serve the editor too.
 #pragma once
 
+#include <array>
+#include <map>
+
 #include "core/eval/scene_surfaces.hpp"
 #include "core/scene/scene.hpp"
 #include "render/display_settings.hpp"
@@ -11,9 +14,17 @@
 
 namespace pl {
 
-// comb_teeth 0: no combs (borders without teeth, no network combs).
+// comb_teeth 0: no combs (borders without teeth, no network combs). The net has every patch's
+// connectivity (core/patch/control_net_topology.hpp), derivative data as arrows, and the points
+// of network faces as derived.
 DrawScene build_draw_scene(const Scene& scene, const SceneSurfaces& surfaces,
                            int comb_teeth = DisplaySettings().comb_teeth);
+
+// Appends one patch's control net to d: its positions as points of `role` (kinds from the patch),
+// its net lines and its derivative arrows. With `shared`, a position found there exactly (the
+// network's vertices and handles) is that point instead of a new one.
+void append_patch_net(DrawScene& d, const Patch& patch, PointRole role,
+                      const std::map<std::array<double, 3>, uint32_t>* shared = nullptr);
 
 // Segments of the polyline drawn for a network curve or a border without a comb: smooth at
 // 4096 px for the cubic edges we draw, and as many as a comb's envelope has at least.
@@ -21,6 +32,11 @@ inline constexpr int kCurveSegments = kMinCombEnvelopeSegments;
 
 // Every network edge curve as a polyline of kCurveSegments segments.
 std::vector<Polyline> network_polylines(const Network& network);
+// Network edge e's polyline (one entry of network_polylines, or with fewer segments for an edge
+// that is small on screen).
+Polyline edge_polyline(const Network& network, int e, int segments = kCurveSegments);
+// A curve at t = k / segments, k = 0..segments.
+Polyline curve_polyline(const BezierCurve& curve, int segments);
 // Every network edge's curvature comb (comb_teeth >= 1).
 std::vector<CurvatureComb> network_combs(const Network& network, int comb_teeth);
 

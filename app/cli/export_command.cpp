@@ -5,8 +5,10 @@
 #include "app/cli/cli.hpp"
 #include "app/cli/commands.hpp"
 #include "app/cli/load_input.hpp"
+#include "app/cli/work_limits.hpp"
 #include "core/cad/cad_export.hpp"
 #include "core/eval/scene_surfaces.hpp"
+#include "core/io/input_limits.hpp"
 #include "core/mesh/mesh_export.hpp"
 
 namespace pl {
@@ -42,17 +44,18 @@ int run_export(std::span<const std::string> args, std::ostream& out, std::ostrea
   if (!target) throw UsageError("export needs -o OUT.{obj,ply,off,stl,step,stp,igs,iges}");
   if (cad_format_for(*target)) return export_cad_file(a, *target, out);
   if (a.value("--tolerance")) throw UsageError("--tolerance applies to STEP and IGES output only");
-  const int density = a.integer("--density", 32, 1, 4096);
+  const int density = a.integer("--density", 32, 1, kMaxDensity);
   const auto scheme = parse_scheme_option(a.value("--scheme"));
   mesh_format_for(*target);  // reject an unknown format before any work
   const std::string file = a.positional()[0];
   const Scene scene = load_input(file);
+  check_work_limits(scene, density, file);
   TessellationCache cache;
   const SceneSurfaces surfaces = evaluate_scene(scene, density, scheme, cache, file);
   std::vector<SurfaceMesh> meshes;
   for (const SceneSurface& s : surfaces.surfaces)
     meshes.push_back(make_surface_mesh(*s.evaluator, s.name));
-  export_meshes(meshes, *target);
+  export_meshes(meshes, *target, file);
   out << "wrote " << meshes.size() << " patch(es) to " << *target << "\n";
   return kExitOk;
 }

@@ -9,8 +9,12 @@
 #include "app/cli/commands.hpp"
 #include "app/cli/draw_scene_builder.hpp"
 #include "app/cli/load_input.hpp"
+#include "app/cli/work_limits.hpp"
 #include "core/io/atomic_file.hpp"
 #include "core/base/data_error.hpp"
+#include "core/io/input_limits.hpp"
+#include "core/mesh/finite_check.hpp"
+#include "render/default_view.hpp"
 #include "render/egl_context.hpp"
 #include "render/frame.hpp"
 
@@ -84,16 +88,18 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
   const auto target = a.value("-o");
   if (!target || !ends_with_png(*target)) throw UsageError("render needs -o OUT.png");
   const auto [width, height] = parse_size(a.value("--size"));
-  const int density = a.integer("--density", 32, 1, 4096);
+  const int density = a.integer("--density", 32, 1, kMaxDensity);
   const auto scheme = parse_scheme_option(a.value("--scheme"));
   const bool compare = a.flag("--compare");
   if (compare && scheme) throw UsageError("--compare renders both schemes; drop --scheme");
   const DisplaySettings settings = parse_settings(a);
-  const std::string view = a.value("--view").value_or("iso");
-  const auto preset = parse_view_preset(view);
+  // No --view: the default view (render/default_view.hpp), which faces a single patch's front.
+  const std::optional<std::string> view = a.value("--view");
+  const auto preset = view ? parse_view_preset(*view) : std::nullopt;
 
   const std::string file = a.positional()[0];
   const Scene scene = load_input(file);
+  check_work_limits(scene, density, file);
   if (compare && !scene.network)
     throw DataError(file, "", "--compare needs a scene with a curve network");
   TessellationCache cache;
@@ -103,7 +109,7 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
   std::vector<std::string> labels;
   if (compare) {
     for (const auto& [s, label] : {std::pair{FaceScheme::Gregory, "Gregory"},
-                                   std::pair{FaceScheme::GB, "Generalized Bezier"}}) {
+                                   std::pair{FaceScheme::GB, "Generalized Bézier"}}) {
       const SceneSurfaces surfaces = evaluate_scene(scene, density, s, cache, file);
       draws.push_back(build_draw_scene(scene, surfaces, teeth));
       labels.push_back(label);
@@ -116,6 +122,7 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
 
   Box box;
   std::vector<const SurfaceMesh*> meshes;
+  std::vector<const DrawScene*> scenes;
   for (const DrawScene& d : draws) {
     const Box b = d.bounds();
     if (!b.empty()) {
@@ -123,6 +130,8 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
       box.add(b.hi);
     }
     for (const SurfaceMesh& m : d.surfaces) meshes.push_back(&m);
+    check_finite(d.surfaces, file);  // a NaN would draw nothing, or garbage, without a word
+    scenes.push_back(&d);
   }
   FrameRequest request;
   request.width = width;
@@ -132,10 +141,17 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
   request.range = settings.range
                       ? *settings.range
                       : automatic_range(meshes, settings.curvature, settings.range_percentile);
-  const double aspect =
-      panel_aspect(width, height, static_cast<int>(draws.size()), settings, request.range);
-  request.camera =
-      preset ? preset_camera(*preset, box, aspect) : read_camera_file(view, box, aspect);
+  request.panels.resize(draws.size());
+  PointKeyEntries key;
+  for (std::size_t i = 0; i < draws.size(); ++i) {
+    request.panels[i].label = labels[i];
+    if (settings.control_net) key |= PointKeyEntries::of(draws[i]);
+  }
+  request.key_entries = key;
+  const double aspect = panel_aspect(request);
+  request.camera = !view    ? default_camera(scenes, aspect)
+                   : preset ? preset_camera(*preset, box, aspect)
+                            : read_camera_file(*view, box, aspect);
 
   try {
     EglContext context;
@@ -143,7 +159,7 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
     std::vector<GpuScene> gpu;
     gpu.reserve(draws.size());
     for (const DrawScene& d : draws) gpu.emplace_back(d);
-    for (std::size_t i = 0; i < gpu.size(); ++i) request.panels.push_back({&gpu[i], labels[i]});
+    for (std::size_t i = 0; i < gpu.size(); ++i) request.panels[i].scene = &gpu[i];
     const Image image = render_frame(renderer, request);
     write_file_atomically(*target, encode_png(image));
   } catch (const GlContextError& e) {

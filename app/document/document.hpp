@@ -1,7 +1,9 @@
 // The open scene with its file, undo history and unsaved-changes state.
 #pragma once
 
+#include <chrono>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -12,6 +14,9 @@ namespace pl {
 
 class Document {
  public:
+  using Clock = std::chrono::steady_clock;
+
+  // A document without a path is untitled: save() refuses, save_as() names it.
   explicit Document(Scene scene = {}, std::filesystem::path path = {});
   // Throws DataError; nothing changes on failure.
   static Document open(const std::filesystem::path& path);
@@ -24,7 +29,15 @@ class Document {
   // Increases with every change of the scene (edits, undo, redo, drag steps).
   uint64_t revision() const { return revision_; }
 
-  void execute(std::unique_ptr<Command> command);
+  // Applies the command to a copy of the scene and makes that the scene, as one undo step;
+  // returns the command's label (what the status bar shows). If the command throws (EditRefused
+  // for a refused request) the document is unchanged and the exception propagates. A command
+  // with a merge key equal to the previous step's, executed within kMergeWindow of it with
+  // nothing in between (no undo, redo, drag or save), extends that step instead: one undo step
+  // for a run of arrow-key nudges.
+  std::string execute(std::unique_ptr<Command> command);
+  static constexpr std::chrono::milliseconds kMergeWindow{1500};
+
   bool can_undo() const { return history_position_ > 0; }
   bool can_redo() const { return history_position_ < history_.size(); }
   bool undo();
@@ -33,8 +46,10 @@ class Document {
   std::string redo_label() const;
 
   // A drag moves points live; end_drag() records the whole drag as one undo step, cancel_drag()
-  // puts the points back. Points that do not exist are rejected (std::invalid_argument).
-  void begin_drag(std::vector<PointRef> points);
+  // puts the points back. Handles move as `mode` says (kept in their vertex's tangent plane by
+  // default); each step starts again from the drag's start, so a turned plane does not drift.
+  // Points that do not exist are rejected (std::invalid_argument).
+  void begin_drag(std::vector<PointRef> points, HandleMode mode = HandleMode::KeepPlane);
   void drag_to(const std::vector<Vec3>& positions);
   void end_drag();
   void cancel_drag();
@@ -45,17 +60,29 @@ class Document {
   void save();
   void save_as(const std::filesystem::path& path);
 
+  // The time source of merging (tests).
+  void set_clock(std::function<Clock::time_point()> clock) { clock_ = std::move(clock); }
+
  private:
   struct Drag {
     std::vector<PointRef> points;
+    HandleMode mode = HandleMode::KeepPlane;
     std::vector<Vec3> start, current;
+    // What a step may change at the dragged vertices and at the vertices of dragged handles:
+    // their positions, normals and the handles of their edges, as they were at the start.
+    std::vector<std::pair<int, Vec3>> vertices;
+    std::vector<std::pair<int, std::optional<Vec3>>> normals;
+    std::vector<std::pair<int, std::array<Vec3, 2>>> handles;
     Scene before;
   };
   struct Step {
     std::string label;
     Scene before, after;
+    std::string merge_key;  // empty: never extended
+    Clock::time_point time;
   };
-  void record(std::string label, Scene before);
+  void record(std::string label, Scene before, std::string merge_key = {});
+  void restore_drag_start();
 
   Scene scene_;
   std::filesystem::path path_;
@@ -64,6 +91,8 @@ class Document {
   std::size_t saved_position_ = 0;    // history position at the last save (SIZE_MAX: never)
   uint64_t revision_ = 0;
   std::optional<Drag> drag_;
+  bool may_merge_ = false;  // the last change was a step recorded by execute()
+  std::function<Clock::time_point()> clock_ = [] { return Clock::now(); };
 };
 
 }  // namespace pl

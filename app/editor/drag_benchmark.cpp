@@ -1,9 +1,13 @@
 // `patchlab --bench-drag [FILE]`: a scripted drag of the network vertex with the most edges
-// (of a generated 2 x 2 quad network unless FILE is given) in a 1280x720 window, each step a
-// full editor frame (coarse re-evaluation, upload, draw, UI, swap, glFinish). Prints
-//   figure editor_drag_fps, editor_frame_ms_p50, editor_frame_ms_p95, editor_settle_ms
-// where settle is the time from the release to the first frame showing the fine surfaces.
+// (of FILE, or of a generated 2 x 2 quad network) in a 1280x720 window, each step a full editor
+// frame (coarse re-evaluation, upload, draw, UI, swap, glFinish). Prints
+//   figure editor_drag_fps, editor_frame_ms_p50, editor_frame_ms_p95,
+//          editor_eval_ms_per_drag_frame, editor_settle_ms, editor_peak_rss_mb
+// where evaluation is the views' share of a drag frame (engine sync and mesh arrays), settle is
+// the time from the release to the first frame showing the fine surfaces, and the peak RSS is
+// the process's high-water mark after all of it: loading and the first evaluation included.
 #include <GLFW/glfw3.h>
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <cmath>
@@ -69,19 +73,21 @@ int Editor::run_drag_benchmark() {
     ++settle_frames;
   } while (!views_.settled() && settle_frames < 100);
   const double settle = std::chrono::duration<double, std::milli>(Clock::now() - release).count();
-  std::size_t samples = 0;
-  for (const SurfaceMesh& m : views_.main()->fine().draw().surfaces) samples += m.positions.size();
+  const EvaluatedView& view = *views_.main();
   std::printf(
-      "# drag of vertex %d, %d frames at %dx%d, densities %d (drag) / %d (rest), "
-      "%zu fine samples\n",
-      vertex, kDragFrames, options_.width, options_.height, prefs_.coarse_density,
-      prefs_.fine_density, samples);
+      "# drag of vertex %d, %d frames at %dx%d: %zu samples while dragging, %zu at rest (%s)\n",
+      vertex, kDragFrames, options_.width, options_.height, view.coarse().sample_count(),
+      view.fine().sample_count(), view.density_note().c_str());
   std::printf("# mean evaluation per drag frame %.2f ms (the rest is drawing, UI and swap)\n",
               eval_ms / kDragFrames);
   std::printf("figure editor_drag_fps %.1f fps\n", kDragFrames / total);
   std::printf("figure editor_frame_ms_p50 %.2f ms\n", percentile(ms, 0.5));
   std::printf("figure editor_frame_ms_p95 %.2f ms\n", percentile(ms, 0.95));
+  std::printf("figure editor_eval_ms_per_drag_frame %.2f ms\n", eval_ms / kDragFrames);
   std::printf("figure editor_settle_ms %.1f ms\n", settle);
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);  // ru_maxrss: the peak resident set, in KiB on Linux
+  std::printf("figure editor_peak_rss_mb %.1f MB\n", usage.ru_maxrss / 1024.0);
   std::fflush(stdout);
   return 0;
 }

@@ -121,6 +121,11 @@ void Editor::follow_document() {
   const Document& doc = session_.doc();
   try {
     if (views_.follow(doc, prefs_.display)) status_.eval_ms = views_.last_eval_ms();
+    // Each face's density from its size on screen, within the views' triangle budgets.
+    const ViewRect rect = layout().panels(views_.compare())[0];
+    views_.fit_to_screen(
+        [&](const Vec3& c, double r) { return 2 * r / world_per_pixel(nav_.camera(), rect, c); },
+        doc);
   } catch (const DataError& e) {
     status_.say(e.what());
   }

@@ -1,23 +1,77 @@
 #include "app/editor/evaluated_view.hpp"
 
+#include <algorithm>
+#include <cstdio>
+
+#include "app/cli/draw_scene_builder.hpp"
+
 namespace pl {
 
 namespace {
+
 std::string source_of(const Document& doc) {
   return doc.path().empty() ? std::string("scene") : doc.path().string();
 }
+
+// Sizes of the surfaces as they are evaluated; pixels from `pixels` when given.
+std::vector<SurfaceSize> sizes_of(
+    const LiveSurfaces& live, const std::function<double(const Vec3&, double)>* pixels = nullptr) {
+  std::vector<SurfaceSize> sizes;
+  for (const SceneSurface& s : live.surfaces().surfaces) {
+    SurfaceSize z;
+    z.triangles = s.evaluator->tessellation().triangles.size();
+    z.density = s.evaluator->tessellation().density;
+    if (pixels) {
+      const Sphere sphere = bounding_sphere(s.evaluator->patch());
+      z.pixels = (*pixels)(sphere.centre, sphere.radius);
+    }
+    sizes.push_back(z);
+  }
+  return sizes;
+}
+
+std::size_t triangles_of(const LiveSurfaces& live) {
+  std::size_t t = 0;
+  for (const SceneSurface& s : live.surfaces().surfaces)
+    t += s.evaluator->tessellation().triangles.size();
+  return t;
+}
+
+// Segments of a curve `pixels` long on screen: a power of two, a segment every ~6 pixels, 4 to 64
+// (kCurveSegments: what LiveCurves and LiveSurfaces sample, so every count divides it).
+int curve_segments(double pixels) {
+  int s = 4;
+  while (s < kCurveSegments && s * 6.0 < pixels) s *= 2;
+  return s;
+}
+
+// The highest density of the budget's chain at which `live`'s surfaces fit it.
+int start_density(const LiveSurfaces& live, const DensityBudget& budget) {
+  return uniform_density(sizes_of(live), budget);
+}
+
 }  // namespace
 
 EvaluatedView::EvaluatedView(const Document& doc, std::optional<FaceScheme> scheme,
-                             int coarse_density, int fine_density, bool combs, int comb_teeth)
+                             int coarse_density, int fine_density, bool combs, int comb_teeth,
+                             ViewBudgets budgets)
     : scheme_(scheme),
-      fine_(doc.scene(), fine_density, scheme, source_of(doc), doc.revision()),
+      // The coarse view samples a third as densely (its chain starts at the coarse density).
+      fine_budget_{2, fine_density, 6, budgets.fine_triangles},
+      coarse_budget_{2, coarse_density, 6.0 * fine_density / std::max(1, coarse_density),
+                     budgets.coarse_triangles},
       coarse_(doc.scene(), coarse_density, scheme, source_of(doc), doc.revision()),
+      // At rest a drag's release moves points once: the fine view keeps no jets.
+      fine_(doc.scene(), start_density(coarse_, fine_budget_), scheme, source_of(doc),
+            doc.revision(), SampleStorage::Compact),
       curves_(combs, comb_teeth),
-      gpu_fine_(fine_.draw()),
-      gpu_coarse_(coarse_.draw()),
       fine_revision_(doc.revision()),
       coarse_revision_(doc.revision()) {
+  const int coarse_start = start_density(coarse_, coarse_budget_);
+  if (coarse_start != coarse_density)
+    coarse_.set_densities(std::vector<int>(coarse_.surfaces().surfaces.size(), coarse_start));
+  gpu_fine_.update(fine_.draw());
+  gpu_coarse_.update(coarse_.draw());
   follow_curves(doc, fine_, doc.revision(), {}, gpu_fine_, fine_curves_serial_);
 }
 
@@ -27,9 +81,32 @@ bool EvaluatedView::follow_curves(const Document& doc, const LiveSurfaces& live,
   curves_.follow(doc.scene(), live.surfaces(), from, live.synced_revision(), changed);
   if (gpu_serial == curves_.serial()) return false;
   gpu_serial = curves_.serial();
-  gpu.update_curves(curves_.network_comb_refs(), curves_.border_refs(),
-                    curves_.border_on_network());
+  gpu.update_curves(curves_.network_comb_refs(), drawn_borders(), curves_.border_on_network());
   return true;
+}
+
+std::vector<const CurvatureComb*> EvaluatedView::drawn_borders() {
+  const auto& borders = curves_.borders();
+  if (border_segments_.size() != borders.size()) return curves_.border_refs();
+  thin_borders_.clear();
+  std::size_t count = 0;
+  for (const auto& surface : borders) count += surface.size();
+  thin_borders_.reserve(count);  // pointers into it stay valid
+  std::vector<const CurvatureComb*> refs;
+  for (std::size_t i = 0; i < borders.size(); ++i)
+    for (const CurvatureComb& c : borders[i]) {
+      const int segments = border_segments_[i];
+      if (!c.teeth.empty() || c.points.size() != std::size_t(kCurveSegments) + 1 ||
+          segments >= kCurveSegments) {
+        refs.push_back(&c);
+        continue;
+      }
+      CurvatureComb& thin = thin_borders_.emplace_back();
+      for (int k = 0; k <= kCurveSegments; k += kCurveSegments / segments)
+        thin.points.push_back(c.points[k]);
+      refs.push_back(&thin);
+    }
+  return refs;
 }
 
 bool EvaluatedView::follow(const Document& doc) {
@@ -60,6 +137,58 @@ bool EvaluatedView::follow(const Document& doc) {
   gpu_fine_.update_geometry(fine_.draw());
   follow_curves(doc, fine_, from, changed, gpu_fine_, fine_curves_serial_);
   return true;
+}
+
+bool EvaluatedView::fit_to_screen(
+    const std::function<double(const Vec3& centre, double radius)>& pixels, const Document& doc) {
+  if (doc.dragging() || fine_revision_ != doc.revision()) return false;
+  bool drawn_changed =
+      !fine_.set_densities(choose_densities(sizes_of(fine_, &pixels), fine_budget_)).empty();
+  // The coarse view only when it shows the same surfaces (it catches up when a drag starts).
+  const bool coarse_current = coarse_revision_ == doc.revision();
+  bool coarse_changed =
+      coarse_current &&
+      !coarse_.set_densities(choose_densities(sizes_of(coarse_, &pixels), coarse_budget_)).empty();
+  // Curves: network edges by their own size on screen, borders by their surface's.
+  if (doc.scene().network) {
+    std::vector<int> segments;
+    const Network& net = *doc.scene().network;
+    for (std::size_t e = 0; e < net.edges.size(); ++e) {
+      const auto& ed = net.edges[e];
+      const Vec3 cp[4] = {net.vertices[ed.v[0]], ed.handles[0], ed.handles[1],
+                          net.vertices[ed.v[1]]};
+      const Vec3 centre = (cp[0] + cp[1] + cp[2] + cp[3]) / 4.0;
+      double radius = 0;
+      for (const Vec3& p : cp) radius = std::max(radius, glm::length(p - centre));
+      segments.push_back(curve_segments(pixels(centre, radius)));
+    }
+    if (fine_.set_curve_segments(segments)) drawn_changed = true;
+    if (coarse_current) coarse_changed |= coarse_.set_curve_segments(segments);
+  }
+  std::vector<int> borders;
+  for (const SceneSurface& s : fine_.surfaces().surfaces) {
+    const Sphere sphere = bounding_sphere(s.evaluator->patch());
+    borders.push_back(curve_segments(pixels(sphere.centre, sphere.radius)));
+  }
+  if (borders != border_segments_) {
+    border_segments_ = std::move(borders);
+    fine_curves_serial_ = coarse_curves_serial_ = UINT64_MAX;  // upload them again
+    drawn_changed |=
+        follow_curves(doc, fine_, fine_.synced_revision(), {}, gpu_fine_, fine_curves_serial_);
+  }
+  if (drawn_changed) gpu_fine_.update_geometry(fine_.draw());
+  if (coarse_changed) gpu_coarse_.update_geometry(coarse_.draw());
+  return drawn_changed;
+}
+
+std::string EvaluatedView::density_note() const {
+  const std::vector<int> d = fine_.densities();
+  if (d.empty()) return {};
+  const auto [lo, hi] = std::minmax_element(d.begin(), d.end());
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "face densities %d-%d, %zu k of %zu k triangles", *lo, *hi,
+                triangles_of(fine_) / 1000, fine_budget_.triangles / 1000);
+  return buf;
 }
 
 }  // namespace pl

@@ -1,32 +1,55 @@
 // One filling of the document's scene (its own schemes, or all-Gregory / all-GB for the
 // comparison) kept live at two densities, each with its GPU copy: while a drag is under way the
 // coarse evaluation follows the document and is drawn; on release the fine one catches up
-// (moving only the changed control points) and is drawn again. The borders and curvature combs
-// (LiveCurves) are shared by both densities and uploaded to the GPU copy shown when they
-// change. Needs a current GL context.
+// (re-filling and re-evaluating only the faces the drag changed) and is drawn again. The borders
+// and curvature combs (LiveCurves) are shared by both densities and uploaded to the GPU copy shown
+// when they change. Needs a current GL context.
+//
+// Big networks: each view has a triangle budget. It starts at the highest density of its chain
+// (fine_density, fine_density / 2, ...) at which all surfaces fit the budget, and
+// fit_to_screen() then gives each face the density its size on screen asks for, within the
+// budget (core/eval/density_choice.hpp), so drawing and memory stay bounded whatever the size of
+// the network; density_note() says what was chosen, for the status bar. The network curves and
+// the borders are drawn with segments for their size on screen too (4 to 64).
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 
 #include "app/document/document.hpp"
 #include "app/editor/logic/live_curves.hpp"
 #include "app/editor/logic/live_surfaces.hpp"
+#include "core/eval/density_choice.hpp"
 #include "render/display_settings.hpp"
 #include "render/gpu_scene.hpp"
 
 namespace pl {
 
+struct ViewBudgets {
+  std::size_t fine_triangles = 600000;    // drawn at rest
+  std::size_t coarse_triangles = 120000;  // drawn while dragging: the frame rate's share
+};
+
 class EvaluatedView {
  public:
   // Throws DataError when the scene cannot be evaluated. combs, comb_teeth: as configure_combs.
   EvaluatedView(const Document& doc, std::optional<FaceScheme> scheme, int coarse_density,
-                int fine_density, bool combs = false,
-                int comb_teeth = DisplaySettings().comb_teeth);
+                int fine_density, bool combs = false, int comb_teeth = DisplaySettings().comb_teeth,
+                ViewBudgets budgets = {});
 
   // Follows the document; returns true when what is drawn changed. Throws DataError when the
   // edited network cannot be filled (the view keeps its last state).
   bool follow(const Document& doc);
+
+  // Chooses every surface's density from its diameter on screen (`pixels(centre, radius)`: the
+  // diameter in pixels of that sphere) within the budgets, and re-evaluates the surfaces whose
+  // density changes (nothing while a drag is under way: its frames keep their cost). Returns
+  // true when what is drawn changed. Cheap when nothing changes: one bounding sphere per surface.
+  bool fit_to_screen(const std::function<double(const Vec3& centre, double radius)>& pixels,
+                     const Document& doc);
+  // "face densities 6-24, 412 k of 600 k triangles": for the status bar.
+  std::string density_note() const;
 
   // Curvature combs on or off and their tooth count: applied by the next follow(), which
   // resamples the curves of the surfaces shown without re-evaluating them (no comb work while
@@ -36,6 +59,7 @@ class EvaluatedView {
   const LiveSurfaces& shown() const { return coarse_shown_ ? coarse_ : fine_; }
   const GpuScene& gpu() const { return coarse_shown_ ? gpu_coarse_ : gpu_fine_; }
   const LiveSurfaces& fine() const { return fine_; }
+  const LiveSurfaces& coarse() const { return coarse_; }
   const LiveCurves& curves() const { return curves_; }
   bool settled() const { return !coarse_shown_; }
   std::optional<FaceScheme> scheme() const { return scheme_; }
@@ -47,8 +71,15 @@ class EvaluatedView {
   bool follow_curves(const Document& doc, const LiveSurfaces& live, uint64_t from,
                      const std::vector<int>& changed, GpuScene& gpu, uint64_t& gpu_serial);
 
+  // The border polylines uploaded: LiveCurves' own, or every k-th point of one (a border a few
+  // pixels long on screen needs a few segments, not 64).
+  std::vector<const CurvatureComb*> drawn_borders();
+
   std::optional<FaceScheme> scheme_;
-  LiveSurfaces fine_, coarse_;
+  DensityBudget fine_budget_, coarse_budget_;
+  std::vector<int> border_segments_;  // per surface, from the last fit_to_screen
+  std::vector<CurvatureComb> thin_borders_;
+  LiveSurfaces coarse_, fine_;  // coarse first: its surfaces size the fine view's budget
   LiveCurves curves_;
   GpuScene gpu_fine_, gpu_coarse_;
   uint64_t fine_revision_, coarse_revision_;

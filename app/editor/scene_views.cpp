@@ -50,6 +50,14 @@ bool SceneViews::follow(const Document& doc, const DisplaySettings& d) {
   return changed;
 }
 
+bool SceneViews::fit_to_screen(const std::function<double(const Vec3&, double)>& pixels,
+                               const Document& doc) {
+  bool changed = main_ && main_->fit_to_screen(pixels, doc);
+  if (compare_)
+    for (auto& v : compare_views_) changed |= v->fit_to_screen(pixels, doc);
+  return changed;
+}
+
 const EvaluatedView& SceneViews::panel(int i) const {
   if (compare_ && i >= 0 && i < 2) return *compare_views_[i];
   return *main_;

@@ -4,6 +4,7 @@
 // context. A scene that cannot be evaluated leaves no view and an error() to show instead.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -22,6 +23,10 @@ class SceneViews {
   // Follows the document's edits and the comb settings. Returns true when what is drawn
   // changed. Throws DataError when an edit cannot be filled (the views keep their last state).
   bool follow(const Document& doc, const DisplaySettings& display);
+  // Each view's face densities and curve segments for their sizes on screen
+  // (EvaluatedView::fit_to_screen). Returns true when what is drawn changed.
+  bool fit_to_screen(const std::function<double(const Vec3& centre, double radius)>& pixels,
+                     const Document& doc);
 
   bool ready() const { return main_ != nullptr; }
   const std::string& error() const { return error_; }

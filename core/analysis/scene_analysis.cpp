@@ -11,16 +11,6 @@ namespace pl {
 
 namespace {
 
-bool finite(const Vec3& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-bool finite_sample(const SurfaceJet& j, const SurfaceGeometry& g) {
-  return finite(j.p) && finite(j.su) && finite(j.sv) && finite(j.suu) && finite(j.suv) &&
-         finite(j.svv) && finite(g.normal) && std::isfinite(g.gaussian) && std::isfinite(g.mean) &&
-         std::isfinite(g.kmin) && std::isfinite(g.kmax);
-}
-
 // The curve side s of the surface must interpolate, as a function of the side parameter: the
 // network edge (independent of the patch) for faces, the patch's defining boundary curve for
 // explicit patches.
@@ -55,7 +45,7 @@ PatchReport analyze_surface(const Scene& scene, const SceneSurface& s) {
   r.mean = {inf, -inf};
   for (std::size_t i = 0; i < ev.sample_count(); ++i) {
     const SurfaceGeometry& g = ev.geometry()[i];
-    if (!finite_sample(ev.jets()[i], g)) {
+    if (!ev.finite(i)) {
       ++r.nonfinite_samples;
       continue;
     }
@@ -70,7 +60,7 @@ PatchReport analyze_surface(const Scene& scene, const SceneSurface& s) {
     const auto curve = side_curve(scene, s, fs, ps);
     const auto& idx = t.sides[ps];
     for (std::size_t k = 0; k < idx.size(); ++k) {
-      const double d = glm::length(ev.jets()[idx[k]].p - curve(double(k) / t.density));
+      const double d = glm::length(ev.position(idx[k]) - curve(double(k) / t.density));
       r.max_boundary_deviation = std::max(r.max_boundary_deviation, std::isfinite(d) ? d : inf);
     }
   }
@@ -91,7 +81,7 @@ EdgeReport analyze_edge(const SceneSurfaces& ss, const SharedEdge& e) {
     const auto& ga = a.evaluator->geometry()[sa];
     const auto& gb = b.evaluator->geometry()[sb];
     r.max_gap =
-        std::max(r.max_gap, glm::length(a.evaluator->jets()[sa].p - b.evaluator->jets()[sb].p));
+        std::max(r.max_gap, glm::length(a.evaluator->position(sa) - b.evaluator->position(sb)));
     r.max_normal_angle_deg = std::max(r.max_normal_angle_deg, angle_deg(ga.normal, gb.normal));
     r.max_mean_curvature_jump = std::max(r.max_mean_curvature_jump, std::fabs(ga.mean - gb.mean));
   }

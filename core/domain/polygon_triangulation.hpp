@@ -15,9 +15,10 @@ namespace pl {
 // are the indices of its true vertices, the boundary points between two corners lie on their
 // segment (given, not detected: rounded side samples are never exactly collinear). The
 // remaining points lie strictly inside. Returns counter-clockwise
-// triangles covering the polygon exactly once. Interior points that fall exactly on an existing
-// edge are skipped (they would make zero-area triangles); `used` (if given) reports which points
-// are referenced. Throws std::invalid_argument if the polygon cannot be ear-clipped.
+// triangles covering the polygon exactly once. An interior point that falls exactly on an
+// existing edge splits it; one that coincides with a vertex or lies on the boundary is skipped;
+// `used` (if given) reports which points are referenced. Throws std::invalid_argument if the
+// polygon cannot be ear-clipped.
 std::vector<std::array<uint32_t, 3>> triangulate_polygon(std::span<const Vec2> points,
                                                          std::size_t boundary_count,
                                                          const std::vector<uint32_t>& corners,

@@ -2,13 +2,15 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
+#include <optional>
 
 namespace pl {
 
 namespace {
-// A singular sample takes its normal and curvatures from a point this fraction of the way to the
-// domain's interior point: the limit from inside, to the precision a display needs.
-constexpr double kSingularNudge = 1e-6;
+// A singular sample takes its normal and curvatures from their limit, extrapolated from two
+// points this far and twice as far from it (Richardson: error O(h^2), rounding O(1e-16 / h)).
+constexpr double kSingularStep = 1e-5;
 
 // Below this many samples a loop runs on one thread: waking the OpenMP team costs more than it
 // saves (and spinning idle threads steal the core from the renderer and other processes).
@@ -29,12 +31,49 @@ inline void axpy(SurfaceJet& s, const Vec3& d, const Jet& w) {
 }  // namespace
 
 PatchEvaluator::PatchEvaluator(std::shared_ptr<Patch> patch,
-                               std::shared_ptr<const Tessellation> tessellation)
-    : patch_(std::move(patch)), tessellation_(std::move(tessellation)) {
+                               std::shared_ptr<const Tessellation> tessellation,
+                               SampleStorage storage)
+    : patch_(std::move(patch)), tessellation_(std::move(tessellation)), storage_(storage) {
   assert(patch_ && tessellation_);
-  jets_.resize(tessellation_->points.size());
-  geometry_.resize(jets_.size());
+  const std::size_t n = tessellation_->points.size();
+  if (storage_ == SampleStorage::Jets)
+    jets_.resize(n);
+  else
+    positions_.resize(n);
+  geometry_.resize(n);
   evaluate_all();
+}
+
+namespace {
+bool finite(const Vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+bool finite(const SurfaceJet& j) {
+  return finite(j.p) && finite(j.su) && finite(j.sv) && finite(j.suu) && finite(j.suv) &&
+         finite(j.svv);
+}
+}  // namespace
+
+bool PatchEvaluator::finite(std::size_t i) const {
+  const SurfaceGeometry& g = geometry_[i];
+  const bool geometry = pl::finite(g.normal) && std::isfinite(g.gaussian) &&
+                        std::isfinite(g.mean) && std::isfinite(g.kmin) && std::isfinite(g.kmax);
+  if (!jets_.empty()) return geometry && pl::finite(jets_[i]);
+  return geometry && !std::binary_search(nonfinite_.begin(), nonfinite_.end(), uint32_t(i));
+}
+
+void PatchEvaluator::store_compact(std::span<const SurfaceJet> jets, std::size_t first) {
+  const std::size_t count = jets.size();
+  differential_geometry_many(jets, std::span(geometry_).subspan(first, count));
+  for (std::size_t j = 0; j < count; ++j) {
+    const std::size_t i = first + j;
+    positions_[i] = jets[j].p;
+    if (geometry_[i].status == GeometryStatus::Singular) geometry_[i] = singular_limit(i);
+    if (!pl::finite(jets[j])) {
+#pragma omp critical(patch_evaluator_nonfinite)
+      nonfinite_.push_back(static_cast<uint32_t>(i));
+    }
+  }
 }
 
 void PatchEvaluator::update_geometry(std::span<const uint32_t> index, std::size_t first,
@@ -47,24 +86,65 @@ void PatchEvaluator::update_geometry(std::span<const uint32_t> index, std::size_
     differential_geometry_many(jets_, index.subspan(first, count), geometry_);
   for (std::size_t j = first; j < first + count; ++j) {
     const std::size_t i = index.empty() ? j : index[j];
-    if (geometry_[i].status != GeometryStatus::Singular) continue;
-    const Vec2 x = tessellation_->points[i];
-    const Vec2 inside = x + kSingularNudge * (patch_->domain().interior_point() - x);
-    geometry_[i] = differential_geometry(patch_->evaluate(inside));
-    geometry_[i].status = GeometryStatus::Singular;
+    if (geometry_[i].status == GeometryStatus::Singular) geometry_[i] = singular_limit(i);
   }
+}
+
+SurfaceGeometry PatchEvaluator::singular_limit(std::size_t i) const {
+  const Domain& domain = patch_->domain();
+  // The limit at x from the points `at(h)`, `at(2h)`; nothing if those are singular too.
+  const auto limit = [&](const auto& at) -> std::optional<SurfaceGeometry> {
+    const SurfaceGeometry a = differential_geometry(patch_->evaluate(at(kSingularStep)));
+    const SurfaceGeometry b = differential_geometry(patch_->evaluate(at(2 * kSingularStep)));
+    if (a.status == GeometryStatus::Singular || b.status == GeometryStatus::Singular)
+      return std::nullopt;
+    SurfaceGeometry g;
+    g.normal = glm::normalize(2.0 * a.normal - b.normal);
+    g.gaussian = 2 * a.gaussian - b.gaussian;
+    g.mean = 2 * a.mean - b.mean;
+    g.kmin = 2 * a.kmin - b.kmin;
+    g.kmax = 2 * a.kmax - b.kmax;
+    g.status = GeometryStatus::Singular;
+    return g;
+  };
+  // On the boundary, along the side: a corner where two sides run on in one direction (a split
+  // edge's vertex) is singular only at that point, and the faces sharing the edge agree on the
+  // limit along it. Elsewhere (or if the side is degenerate itself), towards the interior.
+  const Tessellation& t = *tessellation_;
+  for (std::size_t s = 0; s < t.sides.size(); ++s) {
+    const auto& side = t.sides[s];
+    const auto at = std::find(side.begin(), side.end(), static_cast<uint32_t>(i));
+    if (at == side.end()) continue;
+    const double u = double(at - side.begin()) / t.density, dir = u < 0.5 ? 1 : -1;
+    if (auto g = limit([&](double h) { return domain.side_point(int(s), u + dir * h); })) return *g;
+    break;
+  }
+  const Vec2 x = t.points[i], d = domain.interior_point() - x;
+  if (auto g = limit([&](double h) { return x + h * d; })) return *g;
+  SurfaceGeometry g = differential_geometry(patch_->evaluate(x + 1e-3 * d));
+  g.status = GeometryStatus::Singular;
+  return g;
 }
 
 void PatchEvaluator::evaluate_all() {
   const auto& xs = tessellation_->points;
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(xs.size());
+  nonfinite_.clear();
   // Chunks through evaluate_many, so patch types with a batched (SIMD) form use it.
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (std::ptrdiff_t b = 0; b < n; b += kChunk) {
     const std::ptrdiff_t e = std::min(n, b + kChunk);
-    patch_->evaluate_many(std::span(xs).subspan(b, e - b), std::span(jets_).subspan(b, e - b));
-    update_geometry({}, b, e - b);
+    if (storage_ == SampleStorage::Jets) {
+      patch_->evaluate_many(std::span(xs).subspan(b, e - b), std::span(jets_).subspan(b, e - b));
+      update_geometry({}, b, e - b);
+    } else {  // the chunk's jets live only until its geometry is computed
+      SurfaceJet chunk[kChunk];
+      const std::span<SurfaceJet> jets(chunk, static_cast<std::size_t>(e - b));
+      patch_->evaluate_many(std::span(xs).subspan(b, e - b), jets);
+      store_compact(jets, b);
+    }
   }
+  std::sort(nonfinite_.begin(), nonfinite_.end());
   // Columns depend only on the basis, but a full rebuild starts clean.
   for (Column& c : columns_) keep_storage(c);
   columns_.clear();
@@ -122,11 +202,16 @@ const PatchEvaluator::Column& PatchEvaluator::column(std::size_t k) {
 }
 
 void PatchEvaluator::prepare_influence(std::size_t k) {
-  column(k);
+  if (storage_ == SampleStorage::Jets) column(k);  // compact samples are evaluated again
 }
 
 std::size_t PatchEvaluator::move_control_point(std::size_t k, const Vec3& p) {
   assert(k < patch_->size());
+  if (storage_ == SampleStorage::Compact) {
+    patch_->set_control_point(k, p);
+    evaluate_all();
+    return sample_count();
+  }
   const Vec3 d = p - patch_->control_point(k);
   patch_->set_control_point(k, p);
   const Column& c = column(k);
@@ -159,6 +244,11 @@ std::size_t PatchEvaluator::max_columns() const {
 std::size_t PatchEvaluator::move_control_points(std::span<const PointMove> moves) {
   if (moves.size() == 1) return move_control_point(moves[0].k, moves[0].p);
   if (moves.empty()) return 0;
+  if (storage_ == SampleStorage::Compact) {  // one evaluation for all of them
+    for (const PointMove& m : moves) patch_->set_control_point(m.k, m.p);
+    evaluate_all();
+    return sample_count();
+  }
   if (moves.size() > max_columns()) {
     for (const PointMove& m : moves) patch_->set_control_point(m.k, m.p);
     evaluate_all();

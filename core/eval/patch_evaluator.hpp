@@ -17,16 +17,34 @@
 
 namespace pl {
 
+// What an evaluator keeps of each sample.
+enum class SampleStorage {
+  // The surface jet (position and first and second derivatives, 144 bytes) and the geometry:
+  // a control-point move is an axpy with the point's influence column (a drag's view).
+  Jets,
+  // The position and the geometry only (88 instead of 208 bytes): what drawing and analysis
+  // read. A control-point move evaluates the patch again (a view at rest, which a drag's release
+  // moves once).
+  Compact,
+};
+
 class PatchEvaluator {
  public:
   // Evaluates every sample at once.
-  PatchEvaluator(std::shared_ptr<Patch> patch, std::shared_ptr<const Tessellation> tessellation);
+  PatchEvaluator(std::shared_ptr<Patch> patch, std::shared_ptr<const Tessellation> tessellation,
+                 SampleStorage storage = SampleStorage::Jets);
 
   const Patch& patch() const { return *patch_; }
   const Tessellation& tessellation() const { return *tessellation_; }
-  std::size_t sample_count() const { return jets_.size(); }
+  SampleStorage storage() const { return storage_; }
+  std::size_t sample_count() const { return geometry_.size(); }
+  // Every sample's jet; empty with SampleStorage::Compact.
   const std::vector<SurfaceJet>& jets() const { return jets_; }
   const std::vector<SurfaceGeometry>& geometry() const { return geometry_; }
+  // Sample i's position (either storage).
+  Vec3 position(std::size_t i) const { return jets_.empty() ? positions_[i] : jets_[i].p; }
+  // Whether sample i's jet and geometry are all finite numbers (either storage).
+  bool finite(std::size_t i) const;
   // Increases whenever samples change, so the renderer knows what to re-upload.
   uint64_t revision() const { return revision_; }
   // An evaluator that replaces another continues its revision numbers, so a renderer that
@@ -90,10 +108,18 @@ class PatchEvaluator {
   void keep_storage(Column& c);
   // Geometry of samples first..first+count-1, or of index[first..first+count) if index is given.
   void update_geometry(std::span<const uint32_t> index, std::size_t first, std::size_t count);
+  // Compact storage: samples first..first+count-1 from their jets, which are not kept.
+  void store_compact(std::span<const SurfaceJet> jets, std::size_t first);
+  // Normal and curvatures of singular sample i (Su x Sv = 0) from their limit: along its domain
+  // side for a boundary sample, else towards the domain's interior.
+  SurfaceGeometry singular_limit(std::size_t i) const;
 
   std::shared_ptr<Patch> patch_;
   std::shared_ptr<const Tessellation> tessellation_;
-  std::vector<SurfaceJet> jets_;
+  SampleStorage storage_;
+  std::vector<SurfaceJet> jets_;     // Jets storage
+  std::vector<Vec3> positions_;      // Compact storage
+  std::vector<uint32_t> nonfinite_;  // Compact storage: samples with a non-finite jet
   std::vector<SurfaceGeometry> geometry_;
   std::vector<Column> columns_;
   JetArray spare_;  // sample_count() entries, or empty

@@ -1,17 +1,23 @@
 #include "core/eval/scene_evaluation.hpp"
 
-namespace pl {
+#include <stdexcept>
 
-SceneEvaluation::SceneEvaluation(const Scene& scene, int density, std::optional<FaceScheme> scheme,
-                                 std::string source)
-    : density_(density), scheme_(scheme), source_(std::move(source)) {
-  surfaces_ = evaluate_scene(scene, density_, scheme_, cache_, source_);
-}
+namespace pl {
 
 namespace {
 
-// Moves the evaluator's patch onto `target` point by point; false if the structure differs.
-bool follow(PatchEvaluator& ev, const Patch& target, SyncStats& stats) {
+std::string face_name(const Network& net, int f) {
+  const std::string& name = net.faces[f].name;
+  return name.empty() ? "face" + std::to_string(f) : name;
+}
+
+std::string piece_name(const std::string& patch_name, std::size_t pieces, std::size_t k) {
+  return pieces == 1 ? patch_name : patch_name + "." + std::to_string(k);
+}
+
+// Moves the evaluator's patch onto `target` point by point; false if the structure differs (a
+// different type, point count or domain cannot be followed point by point).
+bool follow(PatchEvaluator& ev, const Patch& target, std::size_t& moved) {
   const Patch& current = ev.patch();
   if (current.type() != target.type() || current.size() != target.size() ||
       current.domain().key() != target.domain().key())
@@ -21,58 +27,165 @@ bool follow(PatchEvaluator& ev, const Patch& target, SyncStats& stats) {
     if (current.control_point(k) != target.control_point(k))
       moves.push_back({k, target.control_point(k)});
   ev.move_control_points(moves);
-  stats.moved_points += moves.size();
+  moved += moves.size();
   return true;
 }
 
 }  // namespace
 
+SceneEvaluation::SceneEvaluation(const Scene& scene, int density, std::optional<FaceScheme> scheme,
+                                 std::string source, SampleStorage storage)
+    : density_(density),
+      scheme_(scheme),
+      source_(std::move(source)),
+      storage_(storage),
+      filling_(scheme, source_) {
+  if (density < 1) throw std::invalid_argument("SceneEvaluation: density must be at least 1");
+  sync(scene);
+}
+
+std::unique_ptr<PatchEvaluator> SceneEvaluation::make_evaluator(std::shared_ptr<Patch> patch,
+                                                                int density) {
+  auto tess = cache_.get(patch->domain(), density);
+  return std::make_unique<PatchEvaluator>(std::move(patch), std::move(tess), storage_);
+}
+
 SyncStats SceneEvaluation::sync(const Scene& scene) {
+  static const Network kNoNetwork;
+  // The only step that can refuse the scene comes first: nothing has changed if it throws.
+  const FillingUpdate up = filling_.update(scene.network ? *scene.network : kNoNetwork);
   SyncStats stats;
-  const std::size_t faces = scene.network ? scene.network->faces.size() : 0;
-  std::vector<std::vector<std::shared_ptr<Patch>>> pieces;
-  std::size_t surface_count = faces;
-  for (const ScenePatch& sp : scene.patches) {
-    pieces.push_back(surface_pieces_of(*sp.patch));
-    surface_count += pieces.back().size();
-  }
-  if (surface_count != surfaces_.surfaces.size()) {
-    // Surfaces were added or removed: start again (rare, not on the drag path).
-    SceneSurfaces fresh = evaluate_scene(scene, density_, scheme_, cache_, source_);
-    surfaces_ = std::move(fresh);
-    for (std::size_t s = 0; s < surfaces_.surfaces.size(); ++s)
-      stats.changed_surfaces.push_back(int(s));
-    stats.rebuilt_surfaces = surfaces_.surfaces.size();
-    return stats;
-  }
-  std::vector<std::pair<int, std::shared_ptr<Patch>>> targets;  // (surface index, new patch)
-  if (scene.network) {
-    const NetworkTopology topo = validate_network(*scene.network, source_);
-    NetworkFilling filling = fill_network(*scene.network, topo, scheme_, source_);
-    surfaces_.projected_vertices = std::move(filling.projected_vertices);
-    for (FacePatch& fp : filling.faces)
-      for (std::size_t s = 0; s < surfaces_.surfaces.size(); ++s)
-        if (surfaces_.surfaces[s].face == fp.face)
-          targets.emplace_back(int(s), std::move(fp.patch));
-  }
-  std::vector<std::size_t> next_piece(scene.patches.size(), 0);
-  for (std::size_t s = 0; s < surfaces_.surfaces.size(); ++s) {
-    const int p = surfaces_.surfaces[s].patch;
-    if (p >= 0) targets.emplace_back(int(s), pieces.at(p).at(next_piece[p]++));
-  }
-  for (auto& [s, patch] : targets) {
-    SceneSurface& surface = surfaces_.surfaces[s];
-    const uint64_t before = surface.evaluator->revision();
-    if (!follow(*surface.evaluator, *patch, stats)) {
-      std::shared_ptr<Patch> own = patch->clone();
-      auto tess = cache_.get(own->domain(), density_);
-      surface.evaluator = std::make_unique<PatchEvaluator>(std::move(own), std::move(tess));
-      surface.evaluator->continue_revisions_from(before);
-      ++stats.rebuilt_surfaces;
-      stats.changed_surfaces.push_back(s);
-    } else if (surface.evaluator->revision() != before) {
-      stats.changed_surfaces.push_back(s);
+  stats.renumbered = up.renumbered;
+  std::vector<SceneSurface> out;
+  out.reserve(surfaces_.surfaces.size());
+  sync_faces(up, out, stats);
+  sync_patches(scene, out, stats);
+  surfaces_.surfaces = std::move(out);
+  if (up.renumbered)
+    surfaces_.shared_edges = shared_edges_of(filling_.topology(), surfaces_.surfaces);
+  if (up.projected_changed) surfaces_.projected_vertices = filling_.projected_vertices();
+  return stats;
+}
+
+void SceneEvaluation::sync_faces(const FillingUpdate& up, std::vector<SceneSurface>& out,
+                                 SyncStats& stats) {
+  const Network& net = filling_.network();
+  std::vector<SceneSurface>& old = surfaces_.surfaces;
+  const int faces = static_cast<int>(up.previous_face.size());
+  std::size_t next_refill = 0;
+  for (int f = 0; f < faces; ++f) {
+    const int from = up.previous_face[f];
+    if (from >= 0) {  // an unchanged patch: its evaluator and samples are kept
+      SceneSurface s = std::move(old.at(from));
+      s.face = f;
+      s.patch_side = filling_.patch_side(f);
+      const std::string name = face_name(net, f);
+      const bool changed = from != f || s.name != name;
+      s.name = name;
+      if (changed) stats.changed_surfaces.push_back(f);
+      stats.previous_surface.push_back(from);
+      out.push_back(std::move(s));
+      continue;
     }
+    const FacePatch& fp = up.refilled.at(next_refill++);
+    SceneSurface s;
+    const bool same_face = !up.renumbered && f < static_cast<int>(old.size()) && old[f].face == f;
+    if (same_face) s = std::move(old[f]);
+    s.name = face_name(net, f);
+    s.face = f;
+    s.patch = -1;
+    s.patch_side = fp.patch_side;
+    const uint64_t before = s.evaluator ? s.evaluator->revision() : 0;
+    if (s.evaluator && follow(*s.evaluator, *fp.patch, stats.moved_points)) {
+      if (s.evaluator->revision() != before) stats.changed_surfaces.push_back(f);
+      stats.previous_surface.push_back(f);
+    } else {
+      const int density = s.evaluator ? s.evaluator->tessellation().density : density_;
+      s.evaluator = make_evaluator(fp.patch->clone(), density);
+      s.evaluator->continue_revisions_from(before);
+      ++stats.rebuilt_surfaces;
+      stats.changed_surfaces.push_back(f);
+      stats.previous_surface.push_back(-1);
+    }
+    out.push_back(std::move(s));
+  }
+}
+
+void SceneEvaluation::sync_patches(const Scene& scene, std::vector<SceneSurface>& out,
+                                   SyncStats& stats) {
+  std::vector<SceneSurface>& old = surfaces_.surfaces;
+  std::size_t old_index = 0;  // first surface of patch_sources_[i] in `old`
+  while (old_index < old.size() && old[old_index].patch < 0) ++old_index;
+  std::vector<PatchSource> sources;
+  for (std::size_t i = 0; i < scene.patches.size(); ++i) {
+    const ScenePatch& sp = scene.patches[i];
+    const std::string name = sp.name.empty() ? "patch" + std::to_string(i) : sp.name;
+    const bool had = i < patch_sources_.size();
+    const std::size_t old_first = old_index, old_count = had ? patch_sources_[i].surfaces : 0;
+    old_index += old_count;
+    PatchSource src{sp.patch, name, 0};
+    if (had && patch_sources_[i].patch == sp.patch) {  // the same patch object: unchanged
+      for (std::size_t k = 0; k < old_count; ++k) {
+        SceneSurface s = std::move(old[old_first + k]);
+        s.patch = static_cast<int>(i);
+        const std::string n = piece_name(name, old_count, k);
+        if (old_first + k != out.size() || s.name != n)
+          stats.changed_surfaces.push_back(static_cast<int>(out.size()));
+        stats.previous_surface.push_back(static_cast<int>(old_first + k));
+        s.name = n;
+        out.push_back(std::move(s));
+      }
+      src.surfaces = old_count;
+      sources.push_back(std::move(src));
+      continue;
+    }
+    const auto pieces = surface_pieces_of(*sp.patch);
+    const bool same_count = had && pieces.size() == old_count;
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+      SceneSurface s;
+      if (same_count) s = std::move(old[old_first + k]);
+      s.name = piece_name(name, pieces.size(), k);
+      s.face = -1;
+      s.patch = static_cast<int>(i);
+      s.patch_side.clear();
+      const uint64_t before = s.evaluator ? s.evaluator->revision() : 0;
+      const std::size_t index = out.size();
+      if (s.evaluator && follow(*s.evaluator, *pieces[k], stats.moved_points)) {
+        if (s.evaluator->revision() != before || old_first + k != index)
+          stats.changed_surfaces.push_back(static_cast<int>(index));
+        stats.previous_surface.push_back(static_cast<int>(old_first + k));
+      } else {
+        const int density = s.evaluator ? s.evaluator->tessellation().density : density_;
+        s.evaluator = make_evaluator(pieces[k], density);
+        s.evaluator->continue_revisions_from(before);
+        ++stats.rebuilt_surfaces;
+        stats.changed_surfaces.push_back(static_cast<int>(index));
+        stats.previous_surface.push_back(-1);
+      }
+      out.push_back(std::move(s));
+    }
+    src.surfaces = pieces.size();
+    sources.push_back(std::move(src));
+  }
+  if (sources.size() != patch_sources_.size() || out.size() != old.size()) stats.renumbered = true;
+  patch_sources_ = std::move(sources);
+}
+
+SyncStats SceneEvaluation::set_densities(std::span<const int> densities) {
+  if (densities.size() != surfaces_.surfaces.size())
+    throw std::invalid_argument("set_densities needs one density per surface");
+  for (int d : densities)
+    if (d < 1) throw std::invalid_argument("a density must be at least 1");
+  SyncStats stats;
+  for (std::size_t i = 0; i < densities.size(); ++i) {
+    stats.previous_surface.push_back(static_cast<int>(i));
+    SceneSurface& s = surfaces_.surfaces[i];
+    if (s.evaluator->tessellation().density == densities[i]) continue;
+    const uint64_t before = s.evaluator->revision();
+    s.evaluator = make_evaluator(s.evaluator->patch().clone(), densities[i]);
+    s.evaluator->continue_revisions_from(before);
+    ++stats.rebuilt_surfaces;
+    stats.changed_surfaces.push_back(static_cast<int>(i));
   }
   return stats;
 }

@@ -1,13 +1,10 @@
 #include "core/eval/scene_surfaces.hpp"
 
-#include <map>
-
 namespace pl {
 
 SceneSurfaces evaluate_scene(const Scene& scene, int density, std::optional<FaceScheme> scheme,
                              TessellationCache& cache, const std::string& source) {
   SceneSurfaces out;
-  std::map<int, int> surface_of_face;
   if (scene.network) {
     const NetworkTopology topo = validate_network(*scene.network, source);
     NetworkFilling filling = fill_network(*scene.network, topo, scheme, source);
@@ -20,21 +17,9 @@ SceneSurfaces evaluate_scene(const Scene& scene, int density, std::optional<Face
       s.patch_side = fp.patch_side;
       auto tess = cache.get(fp.patch->domain(), density);
       s.evaluator = std::make_unique<PatchEvaluator>(std::move(fp.patch), std::move(tess));
-      surface_of_face[fp.face] = static_cast<int>(out.surfaces.size());
       out.surfaces.push_back(std::move(s));
     }
-    for (std::size_t e = 0; e < topo.edge_faces.size(); ++e) {
-      const auto& uses = topo.edge_faces[e];
-      if (uses.size() != 2) continue;
-      SharedEdge se;
-      se.edge = static_cast<int>(e);
-      for (int k = 0; k < 2; ++k) {
-        const int s = surface_of_face.at(uses[k].face);
-        se.surface[k] = s;
-        se.side[k] = out.surfaces[s].patch_side.at(uses[k].side);
-      }
-      out.shared_edges.push_back(se);
-    }
+    out.shared_edges = shared_edges_of(topo, out.surfaces);
   }
   for (std::size_t i = 0; i < scene.patches.size(); ++i) {
     const ScenePatch& sp = scene.patches[i];
@@ -48,6 +33,23 @@ SceneSurfaces evaluate_scene(const Scene& scene, int density, std::optional<Face
       s.evaluator = std::make_unique<PatchEvaluator>(pieces[k], std::move(tess));
       out.surfaces.push_back(std::move(s));
     }
+  }
+  return out;
+}
+
+std::vector<SharedEdge> shared_edges_of(const NetworkTopology& topo,
+                                        const std::vector<SceneSurface>& surfaces) {
+  std::vector<SharedEdge> out;
+  for (std::size_t e = 0; e < topo.edge_faces.size(); ++e) {
+    const auto& uses = topo.edge_faces[e];
+    if (uses.size() != 2) continue;
+    SharedEdge se;
+    se.edge = static_cast<int>(e);
+    for (int k = 0; k < 2; ++k) {
+      se.surface[k] = uses[k].face;  // face f is surface f
+      se.side[k] = surfaces.at(uses[k].face).patch_side.at(uses[k].side);
+    }
+    out.push_back(se);
   }
   return out;
 }

@@ -35,6 +35,10 @@ struct SceneSurfaces {
   std::vector<ProjectedVertex> projected_vertices;
 };
 
+// The edges two faces share, for surfaces that list network face f as surface f.
+std::vector<SharedEdge> shared_edges_of(const NetworkTopology& topology,
+                                        const std::vector<SceneSurface>& surfaces);
+
 // The surfaces a scene patch is drawn as: its surface_pieces(), or the patch itself.
 std::vector<std::shared_ptr<Patch>> surface_pieces_of(const Patch& patch);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cfloat>
 #include <cmath>
 #include <utility>
 
@@ -97,7 +98,8 @@ template <class T>
   const T det = dot(c, c);  // EG - F^2 = |Su x Sv|^2, computed directly for accuracy
   const T E = dot(su, su), F = dot(su, sv), G = dot(sv, sv);
   // Squared lengths compared: no square roots on the hot path of every drag update.
-  g.regular = (det > kSingularSine * kSingularSine * (E * G)) & (det > 0) & (det - det == 0);
+  // A subnormal det (a surface of size 1e-80) has lost its digits: rescaled_geometry takes it.
+  g.regular = (det > kSingularSine * kSingularSine * (E * G)) & (det >= DBL_MIN) & (det - det == 0);
   const T scale = 1.0 / square_root(det);
   const V3<T> n{c.x * scale, c.y * scale, c.z * scale};
   const T L = dot(suu, n), M = dot(suv, n), N = dot(svv, n);
@@ -108,6 +110,7 @@ template <class T>
   const T disc = square_root(non_negative(g.mean * g.mean - g.gaussian));
   g.kmin = g.mean - disc;
   g.kmax = g.mean + disc;
+  g.regular = g.regular & (g.gaussian - g.gaussian == 0) & (g.mean - g.mean == 0);  // finite
   return g;
 }
 
@@ -116,9 +119,38 @@ V3<double> v3(const Vec3& a) {
 }
 }  // namespace
 
+namespace {
+// Where the direct formulas fail, the surface scaled by 1/m (m the largest first-derivative
+// component): |Su x Sv|^2 is a fourth power of lengths, which overflows for a surface of size
+// 1e77 and underflows for one of size 1e-77 although its normal is well defined. The scaled
+// surface has the same normal, its curvatures are m times (K m^2 times) the true ones. Called only
+// for the samples the direct formulas reject, so the hot path is unchanged; a truly singular
+// sample (Su x Sv = 0) stays singular.
+SurfaceGeometry rescaled_geometry(const SurfaceJet& s) {
+  const double m = std::max({std::fabs(s.su.x), std::fabs(s.su.y), std::fabs(s.su.z),
+                             std::fabs(s.sv.x), std::fabs(s.sv.y), std::fabs(s.sv.z)});
+  if (!(m > 0) || !std::isfinite(m)) return {};
+  const double r = 1.0 / m;
+  if (!std::isfinite(r)) return {};
+  const Curvatures<double> c =
+      curvatures(v3(s.su * r), v3(s.sv * r), v3(s.suu * r), v3(s.suv * r), v3(s.svv * r));
+  if (!c.regular) return {};
+  SurfaceGeometry g{{c.normal.x, c.normal.y, c.normal.z},
+                    c.gaussian * r * r,
+                    c.mean * r,
+                    c.kmin * r,
+                    c.kmax * r,
+                    GeometryStatus::Regular};
+  if (!std::isfinite(g.gaussian) || !std::isfinite(g.mean) || !std::isfinite(g.kmin) ||
+      !std::isfinite(g.kmax))
+    return {};
+  return g;
+}
+}  // namespace
+
 SurfaceGeometry differential_geometry(const SurfaceJet& s) {
   const Curvatures<double> c = curvatures(v3(s.su), v3(s.sv), v3(s.suu), v3(s.suv), v3(s.svv));
-  if (!c.regular) return {};  // Singular, zeros
+  if (!c.regular) return rescaled_geometry(s);  // Singular (zeros) if it is one
   return {{c.normal.x, c.normal.y, c.normal.z},
           c.gaussian,
           c.mean,
@@ -153,7 +185,7 @@ void geometry_lanes(const SurfaceJet* const* in, SurfaceGeometry* const* out, in
                                              c.kmin[b],
                                              c.kmax[b],
                                              GeometryStatus::Regular}
-                           : SurfaceGeometry{};
+                           : rescaled_geometry(*in[b]);
 }
 
 template <class At>

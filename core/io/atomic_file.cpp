@@ -1,47 +1,138 @@
 #include "core/io/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
-#include <random>
 #include <sstream>
 
 #include "core/base/data_error.hpp"
+#include "core/io/input_limits.hpp"
 
 namespace pl {
 
 namespace {
-std::filesystem::path temporary_beside(const std::filesystem::path& target) {
-  std::random_device rd;
+
+std::string temporary_prefix(const std::filesystem::path& target) {
   // Built by appends: GCC 12 reports a false -Wrestrict for "literal" + std::string at -O3.
   std::string name = ".";
   name += target.filename().string();
   name += ".tmp";
-  name += std::to_string(rd() % 1000000);
+  return name;
+}
+
+std::filesystem::path temporary_beside(const std::filesystem::path& target) {
+  static std::atomic<unsigned> counter{0};
+  std::string name = temporary_prefix(target);
+  name += std::to_string(::getpid());
+  name += "-";
+  name += std::to_string(counter++);
   return target.parent_path() / name;
 }
 
-void fsync_path(const std::filesystem::path& p) {
-  const int fd = ::open(p.c_str(), O_RDONLY);
-  if (fd >= 0) {
-    ::fsync(fd);
-    ::close(fd);
-  }
+std::string directory_of(const std::filesystem::path& target) {
+  const auto dir = target.parent_path();
+  return dir.empty() ? std::string(".") : dir.string();
 }
+
+// Writes all of content to fd; returns 0 or the errno of the failure.
+int write_all(int fd, const std::string& content) {
+  std::size_t done = 0;
+  while (done < content.size()) {
+    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return errno;
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  return 0;
+}
+
+int fsync_path(const std::filesystem::path& p) {
+  const int fd = ::open(p.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return errno;
+  const int r = ::fsync(fd) == 0 ? 0 : errno;
+  ::close(fd);
+  return r;
+}
+
+bool process_gone(long pid) {
+  return pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH;
+}
+
 }  // namespace
+
+void throw_write_error(const std::filesystem::path& target, int error) {
+  std::string why;
+  switch (error) {
+    case ENOENT:
+    case ENOTDIR:
+      why = "no such directory " + directory_of(target);
+      break;
+    case EACCES:
+    case EPERM:
+      why = "permission denied in directory " + directory_of(target);
+      break;
+    case EROFS:
+      why = "read-only file system";
+      break;
+    case ENOSPC:
+    case EDQUOT:
+      why = "disk full";
+      break;
+    case EFBIG:
+      why = "file too large (the file size limit was reached)";
+      break;
+    case EISDIR:
+      why = "is a directory";
+      break;
+    default:
+      why = std::strerror(error);
+  }
+  throw DataError(target.string(), "", "cannot write: " + why);
+}
+
+int remove_stale_temporaries(const std::filesystem::path& target) {
+  const std::string prefix = temporary_prefix(target);
+  const auto dir = target.parent_path().empty() ? std::filesystem::path(".") : target.parent_path();
+  std::error_code ec;
+  std::filesystem::directory_iterator it(dir, ec), end;
+  int removed = 0;
+  for (; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.compare(0, prefix.size(), prefix) != 0) continue;
+    // ".NAME.tmp<pid>-<n>[.ext]": the writer's process id.
+    std::size_t i = prefix.size();
+    long pid = 0;
+    while (i < name.size() && name[i] >= '0' && name[i] <= '9' && pid < 100000000)
+      pid = pid * 10 + (name[i++] - '0');
+    if (i == prefix.size() || i >= name.size() || name[i] != '-') continue;
+    if (!process_gone(pid)) continue;
+    std::error_code ignore;
+    removed += std::filesystem::remove(it->path(), ignore) ? 1 : 0;
+  }
+  return removed;
+}
 
 void write_atomically_via(const std::filesystem::path& target,
                           const std::function<void(const std::filesystem::path&)>& produce) {
+  remove_stale_temporaries(target);
   const auto tmp = temporary_beside(target);
   try {
     produce(tmp);
-    fsync_path(tmp);
+    if (const int e = fsync_path(tmp)) throw_write_error(target, e);
     std::error_code ec;
     std::filesystem::rename(tmp, target, ec);
-    if (ec) throw DataError(target.string(), "", "cannot replace file: " + ec.message());
+    if (ec) {
+      if (ec.value() == EISDIR || ec.value() == ENOTEMPTY || ec.value() == EEXIST)
+        throw_write_error(target, EISDIR);
+      throw_write_error(target, ec.value());
+    }
   } catch (...) {
     std::error_code ignore;
     std::filesystem::remove(tmp, ignore);
@@ -51,12 +142,11 @@ void write_atomically_via(const std::filesystem::path& target,
 
 void write_file_atomically(const std::filesystem::path& target, const std::string& content) {
   write_atomically_via(target, [&](const std::filesystem::path& tmp) {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out)
-      throw DataError(target.string(), "", std::string("cannot write: ") + std::strerror(errno));
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
-    out.flush();
-    if (!out) throw DataError(target.string(), "", "write failed (disk full?)");
+    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd < 0) throw_write_error(target, errno);
+    int e = write_all(fd, content);
+    if (::close(fd) != 0 && !e) e = errno;
+    if (e) throw_write_error(target, e);
   });
 }
 
@@ -66,6 +156,11 @@ std::string read_text_file(const std::filesystem::path& path) {
     throw DataError(path.string(), "", "is a directory, not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw DataError(path.string(), "", std::string("cannot open: ") + std::strerror(errno));
+  const auto bytes = std::filesystem::file_size(path, ec);
+  if (!ec && bytes > kMaxInputBytes)
+    throw DataError(path.string(), "",
+                    "the file has " + std::to_string(bytes) + " bytes; PatchLab reads at most " +
+                        std::to_string(kMaxInputBytes));
   std::ostringstream ss;
   ss << in.rdbuf();
   if (in.bad()) throw DataError(path.string(), "", "read failed");

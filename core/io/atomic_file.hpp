@@ -1,5 +1,10 @@
 // Atomic file replacement: write a temporary file beside the target, flush it to disk, rename it
 // over the target. A failure at any step leaves the previous file untouched.
+//
+// The temporary file is ".NAME.tmp<pid>-<n>" (plus the target's extension for writers that choose
+// their format by it). A process killed while writing (SIGKILL, or SIGXFSZ where it is not
+// ignored) cannot remove its own; every later write to the same target removes the temporary
+// files of that target whose process is gone.
 #pragma once
 
 #include <filesystem>
@@ -9,11 +14,20 @@
 
 namespace pl {
 
-// Throws DataError (source = target path) on failure.
+// Throws DataError (source = target path, never the temporary file) naming the reason: no such
+// directory, permission denied, disk full, file too large, ...
 void write_file_atomically(const std::filesystem::path& target, const std::string& content);
 // For writers that stream: `produce` writes to a temporary file path; it is renamed on success.
+// `produce` reports its own failures with throw_write_error(target, errno).
 void write_atomically_via(const std::filesystem::path& target,
                           const std::function<void(const std::filesystem::path& tmp)>& produce);
+
+// The DataError of a failed write to target (error: an errno value).
+[[noreturn]] void throw_write_error(const std::filesystem::path& target, int error);
+
+// Removes the temporary files left beside target by processes that no longer run; returns how
+// many. Called by every atomic write before it starts.
+int remove_stale_temporaries(const std::filesystem::path& target);
 
 std::string read_text_file(const std::filesystem::path& path);  // throws DataError
 

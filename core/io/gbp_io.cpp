@@ -9,6 +9,9 @@
 
 #include "core/base/data_error.hpp"
 #include "core/io/atomic_file.hpp"
+#include "core/io/input_limits.hpp"
+#include "core/io/json_node.hpp"
+#include "core/io/scene_checks.hpp"
 
 namespace pl {
 
@@ -34,7 +37,7 @@ std::string where(std::size_t index) {
 }
 
 std::string quoted(std::string_view t) {
-  return "\"" + std::string(t.substr(0, 40)) + (t.size() > 40 ? "...\"" : "\"");
+  return "\"" + printable(t.substr(0, 40)) + (t.size() > 40 ? "...\"" : "\"");
 }
 
 long long header_integer(const std::vector<std::string_view>& t, std::size_t i,
@@ -63,6 +66,10 @@ double number(std::string_view t, std::size_t i, const std::string& source) {
   if (r.ec != std::errc() || r.ptr != e)
     throw DataError(source, where(i), "expected a number, got " + quoted(t));
   if (!std::isfinite(v)) throw DataError(source, where(i), "non-finite number " + quoted(t));
+  if (std::fabs(v) > kMaxCoordinate)
+    throw DataError(source, where(i),
+                    "coordinate " + quoted(t) + " is out of range: |x| <= " +
+                        short_number(kMaxCoordinate) + " keeps squared lengths finite");
   return v;
 }
 
@@ -100,6 +107,7 @@ GBPatch parse_gbp(const std::string& text, const std::string& source) {
       const std::size_t i = 2 + 3 * p + c;
       points[p][c] = number(t[i], i, source);
     }
+  check_span(points, source, "");
   try {
     return GBPatch(static_cast<int>(n), static_cast<int>(d), std::move(points));
   } catch (const std::invalid_argument& e) {

@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <set>
+
+#include "core/io/input_limits.hpp"
 
 namespace pl {
 
@@ -24,12 +28,34 @@ const char* type_name(const nlohmann::json& j) {
 }
 }  // namespace
 
+std::string short_number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", x);
+  return buf;
+}
+
+std::string printable(std::string_view s) {
+  std::string r;
+  r.reserve(s.size());
+  for (const char c : s) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u < 0x20 || u == 0x7f) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", u);
+      r += buf;
+    } else {
+      r += c;
+    }
+  }
+  return r;
+}
+
 void JsonNode::fail(const std::string& message) const {
-  throw DataError(*source_, path_.empty() ? "(top level)" : path_, message);
+  throw DataError(*source_, path_.empty() ? "(top level)" : path_, printable(message));
 }
 
 std::string JsonNode::child_path(const std::string& key) const {
-  return path_.empty() ? key : path_ + "." + key;
+  return path_.empty() ? printable(key) : path_ + "." + printable(key);
 }
 std::string JsonNode::child_path(std::size_t index) const {
   return path_ + "[" + std::to_string(index) + "]";
@@ -91,6 +117,8 @@ double JsonNode::number() const {
 }
 
 long long JsonNode::integer() const {
+  if (value_->is_number_unsigned() && value_->get<unsigned long long>() > 9000000000000000000ull)
+    fail("integer " + value_->dump() + " is out of range");
   if (value_->is_number_integer()) return value_->get<long long>();
   if (value_->is_number_float()) {
     const double d = value_->get<double>();
@@ -116,7 +144,14 @@ std::string JsonNode::string() const {
 
 Vec3 JsonNode::point() const {
   const auto c = items(3);
-  return {c[0].number(), c[1].number(), c[2].number()};
+  Vec3 p;
+  for (int k = 0; k < 3; ++k) {
+    p[k] = c[k].number();
+    if (std::fabs(p[k]) > kMaxCoordinate)
+      c[k].fail("coordinate " + c[k].raw().dump() + " is out of range: |x| <= " +
+                short_number(kMaxCoordinate) + " keeps squared lengths finite");
+  }
+  return p;
 }
 
 std::vector<Vec3> JsonNode::points() const {
@@ -130,17 +165,21 @@ namespace {
 // to infinity, say) can still be reported with the JSON path of the value being read.
 class PathTracker {
  public:
+  explicit PathTracker(const std::string& source) : source_(source) {}
   bool on_event(int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
     using E = nlohmann::json::parse_event_t;
     switch (event) {
       case E::object_start:
-        frames_.push_back({false, 0, ""});
-        break;
       case E::array_start:
-        frames_.push_back({true, 0, ""});
+        frames_.push_back({event == E::array_start, 0, "", {}});
+        if (frames_.size() > std::size_t(kMaxJsonDepth))
+          throw DataError(source_, path(),
+                          "nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels");
         break;
       case E::key:
         frames_.back().key = parsed.get<std::string>();
+        if (!frames_.back().seen.insert(frames_.back().key).second)
+          throw DataError(source_, path(), "duplicate key (a key may appear once in an object)");
         break;
       case E::object_end:
       case E::array_end:
@@ -159,7 +198,7 @@ class PathTracker {
       if (f.array)
         p += "[" + std::to_string(f.index) + "]";
       else if (!f.key.empty())
-        p += (p.empty() ? "" : ".") + f.key;
+        p += (p.empty() ? "" : ".") + printable(f.key);
     }
     return p;
   }
@@ -169,16 +208,18 @@ class PathTracker {
     bool array;
     std::size_t index;
     std::string key;
+    std::set<std::string> seen;  // keys of an object so far
   };
   void advance() {
     if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
   }
+  const std::string& source_;
   std::vector<Frame> frames_;
 };
 }  // namespace
 
 nlohmann::json parse_json(const std::string& text, const std::string& source) {
-  PathTracker tracker;
+  PathTracker tracker(source);
   try {
     return nlohmann::json::parse(
         text, [&](int depth, nlohmann::json::parse_event_t e, nlohmann::json& j) {
@@ -198,13 +239,13 @@ nlohmann::json parse_json(const std::string& text, const std::string& source) {
     const auto pos = why.find("syntax error");
     if (pos != std::string::npos) why = why.substr(pos);
     throw DataError(source, "line " + std::to_string(line) + ", column " + std::to_string(col),
-                    "invalid JSON: " + why);
+                    "invalid JSON: " + printable(why));
   } catch (const nlohmann::json::exception& e) {
     std::string why = e.what();
     const auto pos = why.find("] ");
     if (pos != std::string::npos) why = why.substr(pos + 2);
     const std::string path = tracker.path();
-    throw DataError(source, path.empty() ? "(top level)" : path, "invalid JSON: " + why);
+    throw DataError(source, path.empty() ? "(top level)" : path, "invalid JSON: " + printable(why));
   }
 }
 

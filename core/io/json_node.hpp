@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/base/data_error.hpp"
@@ -36,7 +37,7 @@ class JsonNode {
   long long integer() const;
   int integer_in(long long lo, long long hi) const;
   std::string string() const;
-  Vec3 point() const;  // [x, y, z]
+  Vec3 point() const;  // [x, y, z], each |x| <= kMaxCoordinate (core/io/input_limits.hpp)
   std::vector<Vec3> points() const;
 
  private:
@@ -48,7 +49,16 @@ class JsonNode {
   std::string path_;
 };
 
-// Parses text as JSON; a syntax error is a DataError naming line and column.
+// Parses text as JSON; a syntax error is a DataError naming line and column. Also refused, with
+// the JSON path: a key given twice in one object (JSON leaves the meaning open; a reader that
+// keeps the last one silently drops data) and nesting deeper than kMaxJsonDepth.
 nlohmann::json parse_json(const std::string& text, const std::string& source);
+inline constexpr int kMaxJsonDepth = 64;
+
+// s with control characters (a JSON key may hold "\u0000") written as \uXXXX, so that a message
+// quoting user text is printed whole, on one line.
+std::string printable(std::string_view s);
+// x with 3 significant digits ("1.5e-154"), for messages.
+std::string short_number(double x);
 
 }  // namespace pl

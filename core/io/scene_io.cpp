@@ -3,8 +3,10 @@
 #include <stdexcept>
 
 #include "core/io/atomic_file.hpp"
+#include "core/io/input_limits.hpp"
 #include "core/io/json_node.hpp"
 #include "core/io/patch_codec.hpp"
+#include "core/io/scene_checks.hpp"
 
 namespace pl {
 
@@ -54,7 +56,11 @@ Network read_network(const JsonNode& node) {
     for (const JsonNode& f : faces->items()) {
       f.allow_only({"loop", "scheme", "name"});
       NetworkFace face;
-      for (const JsonNode& i : f.at("loop").items()) {
+      const JsonNode loop = f.at("loop");
+      if (loop.items().size() > std::size_t(kMaxFaceSides))
+        loop.fail("a face has at most " + std::to_string(kMaxFaceSides) + " sides, this one has " +
+                  std::to_string(loop.items().size()));
+      for (const JsonNode& i : loop.items()) {
         const long long idx = i.integer();
         if (idx < 0 || idx >= nv)
           i.fail("vertex " + std::to_string(idx) + " does not exist (" + std::to_string(nv) +
@@ -104,10 +110,11 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   if (auto name = root.find("name")) scene.name = name->string();
   if (auto net = root.find("network")) {
     scene.network = read_network(*net);
-    validate_network(*scene.network, source);
+    check_face_loops(*scene.network, validate_network(*scene.network, source), source);
   }
   if (auto patches = root.find("patches"))
     for (const JsonNode& p : patches->items()) scene.patches.push_back(read_patch(p));
+  check_spans(scene, source);
   if (auto view = root.find("view")) {
     view->require_object();
     scene.view_json = view->raw().dump();

@@ -1,34 +1,53 @@
-// OBJ and PLY are written by hand: the CLI contract asks for one named object ("o NAME") per patch
-// in OBJ, which OpenMesh's OBJ writer cannot express, and OpenMesh 9's PLY writer stores positions
-// and normals as 32-bit floats even for double meshes, which would throw away the exact normals.
-// OFF and STL (single precision by definition) go through OpenMesh.
+// Every format is written by hand through stdio, so that each write error (disk full, file too
+// large) is seen and reported: OpenMesh 9's writers ignore the stream state and report success
+// for a truncated file. The CLI contract also asks for one named object ("o NAME") per patch in
+// OBJ, which OpenMesh's OBJ writer cannot express, and for double precision in PLY. Nothing is
+// written before every sample is checked finite (core/mesh/finite_check.hpp).
 #include "core/mesh/mesh_export.hpp"
 
-#include <OpenMesh/Core/IO/MeshIO.hh>
-#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
-#include <OpenMesh/Core/System/omstream.hh>
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cstdio>
-#include <fstream>
+#include <cstring>
 
 #include "core/io/atomic_file.hpp"
 #include "core/base/data_error.hpp"
+#include "core/mesh/finite_check.hpp"
 
 namespace pl {
 
 namespace {
 
-struct DoubleTraits : OpenMesh::DefaultTraits {
-  using Point = OpenMesh::Vec3d;
-  using Normal = OpenMesh::Vec3d;
-  VertexAttributes(OpenMesh::Attributes::Normal);
-};
-using OMesh = OpenMesh::TriMesh_ArrayKernelT<DoubleTraits>;
-
-void write_obj(const std::vector<SurfaceMesh>& meshes, const std::filesystem::path& tmp) {
+std::FILE* open_for_writing(const std::filesystem::path& tmp, const std::filesystem::path& target) {
+  errno = 0;
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) throw DataError(tmp.string(), "", "cannot write");
+  if (!f) throw_write_error(target, errno);
+  return f;
+}
+
+// Flushes and closes f; a write error anywhere before (disk full, file too large) shows here.
+void finish(std::FILE* f, const std::filesystem::path& target) {
+  int e = 0;
+  if (std::ferror(f)) e = errno ? errno : EIO;
+  if (std::fflush(f) != 0 && !e) e = errno;
+  if (std::fclose(f) != 0 && !e) e = errno;
+  if (e) throw_write_error(target, e);
+}
+
+// The facet normal: the triangle's own, or where the triangle has no area (two samples coincide,
+// as at the pole of a sphere) the mean of its three exact vertex normals, the limit of the facet
+// normals around it.
+Vec3 facet_normal(const SurfaceMesh& m, const std::array<uint32_t, 3>& t) {
+  const Vec3 &a = m.positions[t[0]], &b = m.positions[t[1]], &c = m.positions[t[2]];
+  Vec3 n = glm::cross(b - a, c - a);
+  const double s = std::max({glm::length(b - a), glm::length(c - a), glm::length(c - b)});
+  if (!(glm::length(n) > 1e-12 * s * s)) n = m.normals[t[0]] + m.normals[t[1]] + m.normals[t[2]];
+  if (!(glm::length(n) > 0)) n = m.normals[t[0]];
+  return glm::normalize(n);
+}
+
+void write_obj(const std::vector<SurfaceMesh>& meshes, std::FILE* f) {
   std::fprintf(f, "# PatchLab %s\n", PATCHLAB_VERSION);
   std::size_t base = 1;
   for (const SurfaceMesh& m : meshes) {
@@ -41,14 +60,9 @@ void write_obj(const std::vector<SurfaceMesh>& meshes, const std::filesystem::pa
     }
     base += m.positions.size();
   }
-  const bool ok = std::fflush(f) == 0 && !std::ferror(f);
-  std::fclose(f);
-  if (!ok) throw DataError(tmp.string(), "", "write failed (disk full?)");
 }
 
-void write_ply(const std::vector<SurfaceMesh>& meshes, const std::filesystem::path& tmp) {
-  std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) throw DataError(tmp.string(), "", "cannot write");
+void write_ply(const std::vector<SurfaceMesh>& meshes, std::FILE* f) {
   std::size_t nv = 0, nf = 0;
   for (const SurfaceMesh& m : meshes) nv += m.positions.size(), nf += m.triangles.size();
   std::fprintf(f,
@@ -72,36 +86,44 @@ void write_ply(const std::vector<SurfaceMesh>& meshes, const std::filesystem::pa
       std::fprintf(f, "3 %zu %zu %zu\n", t[0] + base, t[1] + base, t[2] + base);
     base += m.positions.size();
   }
-  const bool ok = std::fflush(f) == 0 && !std::ferror(f);
-  std::fclose(f);
-  if (!ok) throw DataError(tmp.string(), "", "write failed (disk full?)");
 }
 
-void write_with_openmesh(const std::vector<SurfaceMesh>& meshes, const std::filesystem::path& tmp,
-                         MeshFormat format) {
-  OMesh mesh;
+// OFF: positions and triangles, all patches in one mesh (OFF has no objects).
+void write_off(const std::vector<SurfaceMesh>& meshes, std::FILE* f) {
+  std::size_t nv = 0, nf = 0;
+  for (const SurfaceMesh& m : meshes) nv += m.positions.size(), nf += m.triangles.size();
+  std::fprintf(f, "OFF\n%zu %zu 0\n", nv, nf);
+  for (const SurfaceMesh& m : meshes)
+    for (const Vec3& p : m.positions) std::fprintf(f, "%.17g %.17g %.17g\n", p.x, p.y, p.z);
+  std::size_t base = 0;
   for (const SurfaceMesh& m : meshes) {
-    std::vector<OMesh::VertexHandle> vh;
-    vh.reserve(m.positions.size());
-    for (std::size_t i = 0; i < m.positions.size(); ++i) {
-      const Vec3& p = m.positions[i];
-      const Vec3& n = m.normals[i];
-      auto h = mesh.add_vertex(OpenMesh::Vec3d(p.x, p.y, p.z));
-      mesh.set_normal(h, OpenMesh::Vec3d(n.x, n.y, n.z));
-      vh.push_back(h);
-    }
-    for (const auto& t : m.triangles) mesh.add_face(vh[t[0]], vh[t[1]], vh[t[2]]);
+    for (const auto& t : m.triangles)
+      std::fprintf(f, "3 %zu %zu %zu\n", t[0] + base, t[1] + base, t[2] + base);
+    base += m.positions.size();
   }
-  OpenMesh::IO::Options opt;
-  if (format == MeshFormat::Stl) opt += OpenMesh::IO::Options::Binary;
-  // OpenMesh picks the writer from the extension, so give the temporary file the right one.
-  // Its writers chat on stdout ("write binary file"); a CLI's stdout is for results only.
-  omlog().disable();
-  omout().disable();
-  const bool written = OpenMesh::IO::write_mesh(mesh, tmp.string(), opt, 17);
-  omout().enable();
-  omlog().enable();
-  if (!written) throw DataError(tmp.string(), "", "OpenMesh could not write the mesh");
+}
+
+// Binary STL (little-endian, single precision by definition): an 80-byte header, the facet
+// count, then per facet its normal, three corners and a zero attribute word.
+void write_stl(const std::vector<SurfaceMesh>& meshes, std::FILE* f) {
+  char header[80] = {};
+  std::snprintf(header, sizeof header, "PatchLab %s binary STL", PATCHLAB_VERSION);
+  std::fwrite(header, 1, sizeof header, f);
+  std::size_t nf = 0;
+  for (const SurfaceMesh& m : meshes) nf += m.triangles.size();
+  const uint32_t count = static_cast<uint32_t>(std::min<std::size_t>(nf, UINT32_MAX));
+  std::fwrite(&count, sizeof count, 1, f);
+  for (const SurfaceMesh& m : meshes)
+    for (const auto& t : m.triangles) {
+      float rec[12];
+      const Vec3 n = facet_normal(m, t);
+      const Vec3* v[4] = {&n, &m.positions[t[0]], &m.positions[t[1]], &m.positions[t[2]]};
+      for (int k = 0; k < 4; ++k)
+        for (int c = 0; c < 3; ++c) rec[3 * k + c] = static_cast<float>((*v[k])[c]);
+      const uint16_t attribute = 0;
+      std::fwrite(rec, sizeof rec, 1, f);
+      std::fwrite(&attribute, sizeof attribute, 1, f);
+    }
 }
 
 }  // namespace
@@ -118,24 +140,27 @@ MeshFormat mesh_format_for(const std::filesystem::path& path) {
                   "unknown mesh format \"" + ext + "\" (use .obj, .ply, .off or .stl)");
 }
 
-void export_meshes(const std::vector<SurfaceMesh>& meshes, const std::filesystem::path& path) {
+void export_meshes(const std::vector<SurfaceMesh>& meshes, const std::filesystem::path& path,
+                   const std::string& source) {
   const MeshFormat format = mesh_format_for(path);
-  write_atomically_via(path, [&](const std::filesystem::path& tmp_in) {
-    // Keep the extension on the temporary name (OpenMesh chooses its writer by it).
-    const std::filesystem::path tmp = tmp_in.string() + path.extension().string();
-    try {
-      if (format == MeshFormat::Obj)
-        write_obj(meshes, tmp);
-      else if (format == MeshFormat::Ply)
-        write_ply(meshes, tmp);
-      else
-        write_with_openmesh(meshes, tmp, format);
-      std::filesystem::rename(tmp, tmp_in);
-    } catch (...) {
-      std::error_code ignore;
-      std::filesystem::remove(tmp, ignore);
-      throw;
+  check_finite(meshes, source.empty() ? path.string() : source);
+  write_atomically_via(path, [&](const std::filesystem::path& tmp) {
+    std::FILE* f = open_for_writing(tmp, path);
+    switch (format) {
+      case MeshFormat::Obj:
+        write_obj(meshes, f);
+        break;
+      case MeshFormat::Ply:
+        write_ply(meshes, f);
+        break;
+      case MeshFormat::Off:
+        write_off(meshes, f);
+        break;
+      case MeshFormat::Stl:
+        write_stl(meshes, f);
+        break;
     }
+    finish(f, path);
   });
 }
 

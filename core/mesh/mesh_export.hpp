@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "core/mesh/surface_mesh.hpp"
@@ -13,7 +14,10 @@ enum class MeshFormat { Obj, Ply, Off, Stl };
 // From the file extension; throws DataError for an unknown one.
 MeshFormat mesh_format_for(const std::filesystem::path& path);
 
-// Throws DataError on failure; the previous file is left intact.
-void export_meshes(const std::vector<SurfaceMesh>& meshes, const std::filesystem::path& path);
+// Throws DataError on failure; the previous file is left intact. Every sample is checked first
+// (check_finite): a bad one is reported with `source` (the input file; the target if empty), the
+// patch and the domain parameter, and nothing is written.
+void export_meshes(const std::vector<SurfaceMesh>& meshes, const std::filesystem::path& path,
+                   const std::string& source = "");
 
 }  // namespace pl

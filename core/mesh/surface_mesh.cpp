@@ -14,7 +14,7 @@ SurfaceMesh make_surface_mesh(const PatchEvaluator& ev, std::string name) {
   m.kmax.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const SurfaceGeometry& g = ev.geometry()[i];
-    m.positions[i] = ev.jets()[i].p;
+    m.positions[i] = ev.position(i);
     m.normals[i] = g.normal;
     m.gaussian[i] = g.gaussian;
     m.mean[i] = g.mean;
@@ -24,6 +24,7 @@ SurfaceMesh make_surface_mesh(const PatchEvaluator& ev, std::string name) {
   // Domains are counter-clockwise and the normal is Su x Sv, so domain triangles are already
   // oriented towards the normal.
   m.triangles = ev.tessellation().triangles;
+  m.params = ev.tessellation().points;
   m.revision = ev.revision();
   return m;
 }

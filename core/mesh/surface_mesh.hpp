@@ -14,6 +14,7 @@ struct SurfaceMesh {
   std::string name;
   std::vector<Vec3> positions;
   std::vector<Vec3> normals;  // unit, exact (from derivatives), outward
+  std::vector<Vec2> params;   // the domain point of each vertex (messages name it)
   std::vector<double> gaussian, mean, kmin, kmax;
   std::vector<std::array<uint32_t, 3>> triangles;  // oriented like the normals
   uint64_t revision = 0;

@@ -18,9 +18,11 @@ struct CubicRibbon {             // along face side i, in face-side direction (l
       inner;  // the cubic second row: boundary[j] + (cross-boundary tangent data)/3,
               // pointing into the face; inner[1], inner[2] are the two Chiyokura–
               // Kimura points of this side; inner[0], inner[3] the corner twists' row ends
+  bool operator==(const CubicRibbon&) const = default;
 };
 struct FaceRibbons {
   std::vector<CubicRibbon> sides;
+  bool operator==(const FaceRibbons&) const = default;
 };
 
 // One FaceRibbons per face; also fills projected vertices. Throws DataError (empty source; the

@@ -123,8 +123,10 @@ std::unique_ptr<GBRibbonPatch> gb_face_patch(const FaceRibbons& input, GBDomainK
   const int n = static_cast<int>(input.sides.size());
   if (n < 3) throw std::invalid_argument("a GB face needs at least 3 sides");
   const std::vector<double> turning = face_turning_angles(input);
+  // A straight corner (two sides running on in one direction, as at a split edge's vertex)
+  // counts as convex: its turning angle is zero up to rounding, and no concave domain has one.
   bool convex = true;
-  for (double a : turning) convex = convex && a > 0;
+  for (double a : turning) convex = convex && a > -1e-9;
   if (convex) {
     if (used) *used = GBDomainKind::RegularPolygon;
     return make(input, ConvexPolygonDomain::regular(n).vertices());

@@ -1,11 +1,13 @@
 #include "core/network/network_filling.hpp"
 
+#include <algorithm>
 #include <numeric>
 
 #include "core/base/data_error.hpp"
 #include "core/network/face_ribbons.hpp"
 #include "core/network/gb_face.hpp"
 #include "core/network/gregory_face.hpp"
+#include "core/network/tangent_planes.hpp"
 
 namespace pl {
 
@@ -35,6 +37,45 @@ FacePatch build_face_patch(int face, FaceScheme scheme, const FaceRibbons& ribbo
   fp.patch_side.resize(ribbons.sides.size());
   std::iota(fp.patch_side.begin(), fp.patch_side.end(), 0);
   return fp;
+}
+
+void check_fillable_near(const Network& network, const NetworkTopology& topology,
+                         std::span<const int> vertices, const std::string& source) {
+  std::vector<int> edges, ends, faces;
+  for (int v : vertices)
+    for (int e : topology.vertex_edges.at(v)) {
+      edges.push_back(e);
+      for (int w : network.edges[e].v) ends.push_back(w);
+      for (const EdgeUse& use : topology.edge_faces[e]) faces.push_back(use.face);
+    }
+  const auto unique = [](std::vector<int>& x) {
+    std::sort(x.begin(), x.end());
+    x.erase(std::unique(x.begin(), x.end()), x.end());
+  };
+  unique(edges);
+  unique(ends);
+  unique(faces);
+  // Faces using the edges need the fields of all their sides, so those edges' planes too.
+  std::vector<int> face_edges;
+  for (int f : faces)
+    for (const FaceSide& side : topology.face_sides[f]) {
+      face_edges.push_back(side.edge);
+      for (int w : network.edges[side.edge].v) ends.push_back(w);
+    }
+  unique(face_edges);
+  unique(ends);
+  try {
+    std::vector<TangentPlane> planes(network.vertices.size());
+    for (int v : ends) planes[v] = vertex_tangent_plane(network, topology, v);
+    std::vector<EdgeCrossTangents> cross(network.edges.size());
+    for (int e : face_edges) cross[e] = edge_cross_tangents(network, topology, planes, e);
+    for (int f : faces)
+      build_face_patch(f, resolve_scheme(network.faces[f], std::nullopt),
+                       face_ribbons(network, topology, cross, f), source);
+  } catch (const DataError& e) {
+    if (!e.source().empty()) throw;
+    throw DataError(source, e.where(), e.message());
+  }
 }
 
 NetworkFilling fill_network(const Network& network, const NetworkTopology& topology,

@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,13 @@ struct FaceRibbons;
 // "network.faces[face]" for faces it cannot fill.
 FacePatch build_face_patch(int face, FaceScheme scheme, const FaceRibbons& ribbons,
                            const std::string& source);
+
+// Checks that the faces near `vertices` can be filled: the tangent planes at those vertices and
+// at the other ends of their edges, the fields of those edges and the patches of the faces using
+// them are built (and dropped). What an edit near those vertices needs to know before it is made,
+// at a cost local to them. Throws DataError (source, JSON path, ...) like fill_network.
+void check_fillable_near(const Network& network, const NetworkTopology& topology,
+                         std::span<const int> vertices, const std::string& source);
 
 // Throws DataError (source, "network.faces[i]", ...) for geometry it cannot fill.
 NetworkFilling fill_network(const Network& network, const NetworkTopology& topology,

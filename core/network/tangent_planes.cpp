@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "core/base/data_error.hpp"
@@ -15,12 +16,44 @@ std::string edge_handle_path(const Network& net, int e, int v) {
   return "network.edges[" + std::to_string(e) + "].handles[" + std::to_string(k) + "]";
 }
 
+// The edge's control points (no allocation: planes are computed for every vertex of a network).
+std::array<Vec3, 4> control_points(const Network& net, int e) {
+  const NetworkEdge& ed = net.edges[e];
+  return {net.vertices[ed.v[0]], ed.handles[0], ed.handles[1], net.vertices[ed.v[1]]};
+}
+
 // Size of the edge's control polygon: the scale a "zero" tangent is measured against.
 double edge_extent(const Network& net, int e) {
-  const BezierCurve c = net.edge_curve(e);
+  const std::array<Vec3, 4> p = control_points(net, e);
   double d = 0;
-  for (const Vec3& p : c.control_points()) d = std::max(d, glm::length(p - c.control_points()[0]));
+  for (const Vec3& q : p) d = std::max(d, glm::length(q - p[0]));
   return d;
+}
+
+// The right-hand (Newell) normal of a face's boundary control polygon: which way the face faces,
+// whatever its corners do (a reflex corner's own normal points the other way).
+Vec3 face_polygon_normal(const Network& net, const NetworkTopology& topo, int f) {
+  // Points relative to the first one: the sum is then translation-invariant (no cancellation
+  // far from the origin), and each term is a product of two point differences, finite for every
+  // coordinate the readers accept; its length is taken after scaling by the largest component,
+  // as the squared length of a sum of such products can overflow.
+  Vec3 n(0), first(0), previous(0);
+  bool started = false;
+  for (const FaceSide& side : topo.face_sides[f]) {
+    const std::array<Vec3, 4> pts = control_points(net, side.edge);
+    for (int j = 0; j < 3; ++j) {
+      const Vec3& p = pts[side.reversed ? 3 - j : j];
+      if (started)
+        n += glm::cross(previous - first, p - first);
+      else
+        first = p;
+      started = true;
+      previous = p;
+    }
+  }
+  const double largest = std::max({std::abs(n.x), std::abs(n.y), std::abs(n.z)});
+  if (!(largest > 0) || !std::isfinite(largest)) return Vec3(0);
+  return glm::normalize(n / largest);
 }
 
 bool used_by_a_face(const NetworkTopology& topo, int v) {
@@ -29,11 +62,13 @@ bool used_by_a_face(const NetworkTopology& topo, int v) {
   return false;
 }
 
+}  // namespace
+
 // Least squares: a unit normal minimising sum (n . t_i)^2 is an eigenvector of the smallest
 // eigenvalue of sum t_i t_i^T. When the smallest eigenvalues tie (three orthogonal tangents at a
 // cube corner) every unit vector of their eigenspace is a minimiser, and the one closest to the
 // faces' corner normals is taken. Returns 0 when the tangents are collinear (no plane).
-Vec3 fitted_normal(const std::vector<Vec3>& unit, const Vec3& corners) {
+Vec3 fit_plane_normal(const std::vector<Vec3>& unit, const Vec3& corners) {
   Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
   for (const Vec3& t : unit) {
     const Eigen::Vector3d x(t.x, t.y, t.z);
@@ -56,8 +91,6 @@ Vec3 fitted_normal(const std::vector<Vec3>& unit, const Vec3& corners) {
   return glm::length(n) > 1e-12 ? glm::normalize(n) : glm::normalize(col(0));
 }
 
-}  // namespace
-
 Vec3 end_tangent(const Network& net, int e, int v) {
   const NetworkEdge& ed = net.edges.at(e);
   return ed.v[0] == v ? 3.0 * (ed.handles[0] - net.vertices[v])
@@ -79,9 +112,11 @@ TangentPlane vertex_tangent_plane(const Network& net, const NetworkTopology& top
     unit.push_back(t / len);
   }
   // The faces' outward normals at their corners at v: the outgoing side's tangent crossed with
-  // the reverse of the incoming side's (right-hand rule). Their sum orients the plane and
-  // breaks ties of the least-squares fit.
-  Vec3 corners(0);
+  // the reverse of the incoming side's (right-hand rule). Their sum breaks ties of the
+  // least-squares fit. The plane is oriented by the faces' own normals: at a vertex where a
+  // reflex corner (an L-shaped face's) meets a convex one, the corner normals cancel and their
+  // sum's sign is rounding, which would turn the plane over and fold the faces along its edges.
+  Vec3 corners(0), faces(0);
   for (int e : topo.vertex_edges[v])
     for (const EdgeUse& use : topo.edge_faces[e]) {
       const auto& loop = net.faces[use.face].loop;
@@ -90,6 +125,7 @@ TangentPlane vertex_tangent_plane(const Network& net, const NetworkTopology& top
       const int prev = topo.face_sides[use.face][(use.side + sides - 1) % sides].edge;
       const Vec3 out = end_tangent(net, e, v), back = end_tangent(net, prev, v);
       corners += glm::cross(glm::normalize(out), glm::normalize(back));
+      faces += face_polygon_normal(net, topo, use.face);
     }
   Vec3 n(0);
   if (!net.normals.empty() && net.normals[v]) {
@@ -100,13 +136,13 @@ TangentPlane vertex_tangent_plane(const Network& net, const NetworkTopology& top
                       "a normal must not be the zero vector");
     n /= len;
   } else {
-    n = fitted_normal(unit, corners);
+    n = fit_plane_normal(unit, corners);
     if (n == Vec3(0))
       throw DataError("", vpath,
                       "the end tangents of its edges are collinear, so they do not define a "
                       "tangent plane (give the vertex a normal)");
   }
-  const double orient = glm::dot(n, corners);
+  const double orient = glm::dot(n, faces);
   if (orient < 0) n = -n;
   plane.normal = n;
   plane.defined = true;

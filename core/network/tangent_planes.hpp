@@ -30,6 +30,11 @@ inline constexpr double kProjectionReportDeg = 1e-9;
 // derivative of the edge curve run away from v with parameter in [0, 1].
 Vec3 end_tangent(const Network& network, int edge, int vertex);
 
+// The unit normal of the least-squares plane through unit tangents (minimising the sum of
+// (n . t)^2); ties between equally good planes go to the one closest to `tie_breaker` (the
+// faces' corner normals at the vertex). 0 when the tangents are collinear (no plane). Unoriented.
+Vec3 fit_plane_normal(const std::vector<Vec3>& unit_tangents, const Vec3& tie_breaker);
+
 // The plane at vertex v. Throws DataError (empty source) naming the vertex, normal or edge
 // when it is undefined: end tangents of zero length, all collinear, or one normal to the plane.
 TangentPlane vertex_tangent_plane(const Network& network, const NetworkTopology& topology, int v);

@@ -2,13 +2,15 @@
 
 #include <opensubdiv/far/patchMap.h>
 #include <opensubdiv/far/patchTableFactory.h>
+#include <opensubdiv/far/primvarRefiner.h>
 #include <opensubdiv/far/ptexIndices.h>
 #include <opensubdiv/far/stencilTableFactory.h>
 #include <opensubdiv/far/topologyDescriptor.h>
 
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <OpenMesh/Core/System/omstream.hh>
 #include <algorithm>
-#include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -17,46 +19,145 @@ namespace pl {
 namespace Far = OpenSubdiv::Far;
 namespace Sdc = OpenSubdiv::Sdc;
 
+namespace {
+
+// A stencil table made from our own arrays (its constructor is protected: only OpenSubdiv's
+// factories build them).
+class OwnStencilTable final : public Far::StencilTableReal<double> {
+ public:
+  OwnStencilTable(int control_vertices, const std::vector<int>& offsets,
+                  const std::vector<int>& sizes, const std::vector<int>& sources,
+                  const std::vector<double>& weights)
+      // Every stencil, the control vertices' included: after those the copy resumes at
+      // firstOffset, which is where the rest begins.
+      : Far::StencilTableReal<double>(control_vertices, offsets, sizes, sources, weights, true,
+                                      static_cast<std::size_t>(control_vertices)) {}
+};
+
+// A stencil while it is built: (base vertex, weight) entries, appended by the refiner and
+// merged by a Merger.
+struct StencilBuild {
+  std::vector<std::pair<int, double>> e;
+  void Clear(void* = nullptr) { e.clear(); }
+  void AddWithWeight(const StencilBuild& s, double w) {
+    for (const auto& [v, x] : s.e) e.emplace_back(v, x * w);
+  }
+};
+
+// Merges entries by vertex through a dense row over the base vertices: O(entries), where
+// sorting the appended entries (16 parents of n entries each near an n-ring) cost a log factor
+// and most of the construction.
+class Merger {
+ public:
+  explicit Merger(std::size_t vertices) : row_(vertices, 0.0), seen_(vertices, 0) {}
+  void add(int v, double w) {
+    if (!seen_[v]) seen_[v] = 1, touched_.push_back(v);
+    row_[v] += w;
+  }
+  // The merged stencil, vertices ascending; the row is clean again.
+  void take(StencilBuild& out) {
+    std::sort(touched_.begin(), touched_.end());
+    out.e.clear();
+    out.e.shrink_to_fit();  // the appended entries were many times the merged ones
+    out.e.reserve(touched_.size());
+    for (const int v : touched_) {
+      out.e.emplace_back(v, row_[v]);
+      row_[v] = 0, seen_[v] = 0;
+    }
+    touched_.clear();
+  }
+
+ private:
+  std::vector<double> row_;
+  std::vector<char> seen_;
+  std::vector<int> touched_;
+};
+
+}  // namespace
+
 struct CatmullClarkLimit::Osd {
   OpenMesh::PolyMesh_ArrayKernelT<> mesh;  // the control mesh topology
   std::unique_ptr<Far::TopologyRefiner> refiner;
   std::unique_ptr<Far::PatchTable> patches;
   std::unique_ptr<Far::PatchMap> map;
-  // Stencils from the base vertices to every refined vertex and local (end-cap) point, indexed
-  // like the patch table's point indices.
+  // Stencils from the base vertices to every vertex of every level and every local (end-cap)
+  // point, indexed like the patch table's point indices; vertices ascending within each.
   std::unique_ptr<const Far::StencilTableReal<double>> stencils;
 };
 
-CatmullClarkLimit::CatmullClarkLimit(std::size_t n, const std::vector<std::vector<int>>& faces)
-    : vertex_count_(n), faces_(faces), osd_(std::make_unique<Osd>()) {
-  if (faces_.empty()) throw std::invalid_argument("a Catmull-Clark mesh needs at least one face");
-  std::vector<int> used(n, 0);
-  for (std::size_t f = 0; f < faces_.size(); ++f) {
-    if (faces_[f].size() < 3)
-      throw std::invalid_argument("face " + std::to_string(f) + " has " +
-                                  std::to_string(faces_[f].size()) +
+namespace {
+
+std::string face_name(std::size_t f) {
+  return "face " + std::to_string(f);
+}
+
+// The rules OpenMesh and OpenSubdiv assume (OpenMesh aborts on a repeated vertex, and prints its
+// own complaints), and the limits that keep the work bounded, checked before either sees the mesh.
+void check_mesh(std::size_t n, const std::vector<std::vector<int>>& faces) {
+  if (faces.empty()) throw std::invalid_argument("a Catmull-Clark mesh needs at least one face");
+  if (n > CatmullClarkLimit::kMaxVertices)
+    throw std::invalid_argument("the mesh has " + std::to_string(n) + " vertices; at most " +
+                                std::to_string(CatmullClarkLimit::kMaxVertices) + " are supported");
+  std::vector<int> valence(n, 0);
+  std::set<std::pair<int, int>> directed;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const auto& loop = faces[f];
+    if (loop.size() < 3)
+      throw std::invalid_argument(face_name(f) + " has " + std::to_string(loop.size()) +
                                   " vertices: a face needs at least 3");
-    for (int v : faces_[f]) {
+    if (loop.size() > std::size_t(CatmullClarkLimit::kMaxValence))
+      throw std::invalid_argument(
+          face_name(f) + " has " + std::to_string(loop.size()) + " vertices; at most " +
+          std::to_string(CatmullClarkLimit::kMaxValence) + " are supported");
+    for (int v : loop)
       if (v < 0 || static_cast<std::size_t>(v) >= n)
-        throw std::invalid_argument("face " + std::to_string(f) + ": vertex " + std::to_string(v) +
+        throw std::invalid_argument(face_name(f) + ": vertex " + std::to_string(v) +
                                     " does not exist (" + std::to_string(n) + " vertices)");
-      ++used[v];
+    std::vector<int> sorted = loop;
+    std::sort(sorted.begin(), sorted.end());
+    const auto repeat = std::adjacent_find(sorted.begin(), sorted.end());
+    if (repeat != sorted.end())
+      throw std::invalid_argument(face_name(f) + " repeats vertex " + std::to_string(*repeat) +
+                                  ": a face's vertices must be distinct");
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const int a = loop[i], b = loop[(i + 1) % loop.size()];
+      if (!directed.insert({a, b}).second)
+        throw std::invalid_argument(face_name(f) + ": the edge from vertex " + std::to_string(a) +
+                                    " to " + std::to_string(b) +
+                                    " is used twice in this direction (the faces on it are "
+                                    "flipped, or more than two faces share it)");
+      if (++valence[a] > CatmullClarkLimit::kMaxValence)
+        throw std::invalid_argument("vertex " + std::to_string(a) + " is in more than " +
+                                    std::to_string(CatmullClarkLimit::kMaxValence) + " faces");
     }
   }
   for (std::size_t v = 0; v < n; ++v)
-    if (!used[v])
+    if (!valence[v])
       throw std::invalid_argument("vertex " + std::to_string(v) + " is used by no face");
-  // OpenMesh refuses non-manifold and inconsistently oriented faces (add_face fails).
+}
+
+}  // namespace
+
+CatmullClarkLimit::CatmullClarkLimit(std::size_t n, const std::vector<std::vector<int>>& faces)
+    : vertex_count_(n), faces_(faces), osd_(std::make_unique<Osd>()) {
+  check_mesh(n, faces_);
+  // OpenMesh refuses what is left (faces that touch at a vertex only: a non-manifold vertex),
+  // saying so on its error stream: the message is ours.
   auto& mesh = osd_->mesh;
   std::vector<OpenMesh::VertexHandle> vh(n);
   for (std::size_t v = 0; v < n; ++v) vh[v] = mesh.add_vertex({0, 0, 0});
+  omerr().disable();
   for (std::size_t f = 0; f < faces_.size(); ++f) {
     std::vector<OpenMesh::VertexHandle> loop;
     for (int v : faces_[f]) loop.push_back(vh[v]);
-    if (!mesh.add_face(loop).is_valid())
-      throw std::invalid_argument("face " + std::to_string(f) +
-                                  " makes the mesh non-manifold or flips its orientation");
+    if (!mesh.add_face(loop).is_valid()) {
+      omerr().enable();
+      throw std::invalid_argument(face_name(f) +
+                                  " makes the mesh non-manifold (faces that meet at a vertex "
+                                  "must be joined by edges around it)");
+    }
   }
+  omerr().enable();
 
   std::vector<int> counts, indices;
   for (const auto& f : faces_) {
@@ -90,19 +191,80 @@ CatmullClarkLimit::CatmullClarkLimit(std::size_t n, const std::vector<std::vecto
   osd_->patches.reset(Far::PatchTableFactory::Create(*osd_->refiner, po));
   osd_->map = std::make_unique<Far::PatchMap>(*osd_->patches);
 
-  using StencilFactory = Far::StencilTableFactoryReal<double>;
-  StencilFactory::Options so;
-  so.generateIntermediateLevels = true;
-  so.generateOffsets = true;
-  so.generateControlVerts = true;  // stencil i is point i of the patch table
-  std::unique_ptr<const Far::StencilTableReal<double>> refined(
-      StencilFactory::Create(*osd_->refiner, so));
-  if (const auto* local = osd_->patches->GetLocalPointStencilTable<double>()) {
-    osd_->stencils.reset(
-        StencilFactory::AppendLocalPointStencilTable(*osd_->refiner, refined.get(), local));
-  } else {
-    osd_->stencils = std::move(refined);
+  build_stencils();
+
+  // Every patch's points as indices into its ptex face's point list.
+  const Far::PatchTable& table = *osd_->patches;
+  face_points_.resize(ptex_face_.size());
+  int total = 0;
+  for (int a = 0; a < table.GetNumPatchArrays(); ++a) total += table.GetNumPatches(a);
+  std::vector<int> patch_face(total);
+  for (int a = 0, p = 0; a < table.GetNumPatchArrays(); ++a)
+    for (int i = 0; i < table.GetNumPatches(a); ++i, ++p) {
+      const int face = table.GetPatchParam(a, i).GetFaceId();
+      patch_face[p] = face;
+      const auto cvs = table.GetPatchVertices(a, i);
+      face_points_.at(face).insert(face_points_[face].end(), cvs.begin(), cvs.end());
+    }
+  for (auto& fp : face_points_) {
+    std::sort(fp.begin(), fp.end());
+    fp.erase(std::unique(fp.begin(), fp.end()), fp.end());
   }
+  patch_local_offset_.assign(1, 0);
+  for (int a = 0, p = 0; a < table.GetNumPatchArrays(); ++a)
+    for (int i = 0; i < table.GetNumPatches(a); ++i, ++p) {
+      const auto& fp = face_points_[patch_face[p]];
+      for (const int cv : table.GetPatchVertices(a, i))
+        patch_local_.push_back(
+            static_cast<int>(std::lower_bound(fp.begin(), fp.end(), cv) - fp.begin()));
+      patch_local_offset_.push_back(static_cast<int>(patch_local_.size()));
+    }
+}
+
+// OpenSubdiv's StencilTableFactory merges each added weight by a linear search through the
+// stencil being built: next to an n-valent vertex, where every stencil holds the whole ring,
+// that is O(n^2) per vertex and O(n^3) in all (6 s for a 256-gon). Here every level is
+// interpolated with stencils as the primvar and merged once through a dense row: O(n) per
+// vertex.
+void CatmullClarkLimit::build_stencils() {
+  const Far::TopologyRefiner& r = *osd_->refiner;
+  std::vector<StencilBuild> all(r.GetNumVerticesTotal());
+  const int base = r.GetLevel(0).GetNumVertices();
+  for (int v = 0; v < base; ++v) all[v].e = {{v, 1.0}};
+  const Far::PrimvarRefinerReal<double> primvar(r);
+  Merger merger(base);
+  for (int level = 1, first = 0; level <= r.GetMaxLevel(); ++level) {
+    const int before = r.GetLevel(level - 1).GetNumVertices();
+    StencilBuild* src = all.data() + first;
+    StencilBuild* dst = src + before;
+    primvar.Interpolate(level, src, dst);
+    for (int v = 0; v < r.GetLevel(level).GetNumVertices(); ++v) {
+      for (const auto& [u, w] : dst[v].e) merger.add(u, w);
+      merger.take(dst[v]);
+    }
+    first += before;
+  }
+  // End-cap points: each a stencil over the last level's vertices (an extraordinary vertex's
+  // whole ring for the points at it).
+  if (const auto* local = osd_->patches->GetLocalPointStencilTable<double>()) {
+    const std::size_t refined = all.size();
+    all.resize(refined + local->GetNumStencils());
+    for (int i = 0; i < local->GetNumStencils(); ++i) {
+      const auto st = local->GetStencil(i);
+      for (int k = 0; k < st.GetSize(); ++k)
+        for (const auto& [v, w] : all.at(st.GetVertexIndices()[k]).e)
+          merger.add(v, w * st.GetWeights()[k]);
+      merger.take(all[refined + i]);
+    }
+  }
+  std::vector<int> offsets, sizes, sources;
+  std::vector<double> weights;
+  for (const StencilBuild& b : all) {
+    offsets.push_back(static_cast<int>(sources.size()));
+    sizes.push_back(static_cast<int>(b.e.size()));
+    for (const auto& [v, w] : b.e) sources.push_back(v), weights.push_back(w);
+  }
+  osd_->stencils = std::make_unique<OwnStencilTable>(base, offsets, sizes, sources, weights);
 }
 
 CatmullClarkLimit::~CatmullClarkLimit() = default;
@@ -111,7 +273,29 @@ bool CatmullClarkLimit::boundary_vertex(int v) const {
   return osd_->mesh.is_boundary(OpenMesh::VertexHandle(v));
 }
 
-std::vector<std::pair<int, Jet>> CatmullClarkLimit::basis(int ptex, Vec2 uv) const {
+std::span<const int> CatmullClarkLimit::stencil_vertices(int point) const {
+  const auto st = osd_->stencils->GetStencil(point);
+  return {st.GetVertexIndices(), static_cast<std::size_t>(st.GetSize())};
+}
+
+std::span<const double> CatmullClarkLimit::stencil_weights(int point) const {
+  const auto st = osd_->stencils->GetStencil(point);
+  return {st.GetWeights(), static_cast<std::size_t>(st.GetSize())};
+}
+
+Vec3 CatmullClarkLimit::patch_point(int point, std::span<const Vec3> vertices) const {
+  const auto v = stencil_vertices(point);
+  const auto w = stencil_weights(point);
+  std::size_t best = 0;
+  for (std::size_t k = 1; k < v.size(); ++k)
+    if (w[k] > w[best]) best = k;
+  const Vec3 ref = vertices[v[best]];
+  Vec3 p = ref;
+  for (std::size_t k = 0; k < v.size(); ++k) p += w[k] * (vertices[v[k]] - ref);
+  return p;
+}
+
+CatmullClarkLimit::LocalBasis CatmullClarkLimit::local_basis(int ptex, Vec2 uv) const {
   // Points outside the face (finite differences at its border) use the face's own patch there.
   const double u = std::clamp(uv.x, 0.0, 1.0), v = std::clamp(uv.y, 0.0, 1.0);
   const Far::PatchTable::PatchHandle* h = osd_->map->FindPatch(ptex, u, v);
@@ -122,19 +306,38 @@ std::vector<std::pair<int, Jet>> CatmullClarkLimit::basis(int ptex, Vec2 uv) con
   // the ptex (u, v) of a sub-face spans 2^(depth-1) patches (PatchParam::GetParamFraction), so
   // its derivatives come out twice too large per order (checked against finite differences in
   // the tests). Scaled back to the ptex face's own (u, v).
-  if (osd_->patches->GetPatchParam(*h).NonQuadRoot())
-    for (int i = 0; i < 20; ++i)
-      wu[i] *= 0.5, wv[i] *= 0.5, wuu[i] *= 0.25, wuv[i] *= 0.25, wvv[i] *= 0.25;
-  const Far::ConstIndexArray cvs = osd_->patches->GetPatchVertices(*h);
-  std::map<int, Jet> acc;
-  for (int i = 0; i < cvs.size(); ++i) {
-    const Jet wi(w[i], wu[i], wv[i], wuu[i], wuv[i], wvv[i]);
-    const auto s = osd_->stencils->GetStencil(cvs[i]);
-    const int* idx = s.GetVertexIndices();
-    const double* sw = s.GetWeights();
-    for (int k = 0; k < s.GetSize(); ++k) acc[idx[k]] += wi * sw[k];
+  const double s1 = osd_->patches->GetPatchParam(*h).NonQuadRoot() ? 0.5 : 1.0, s2 = s1 * s1;
+  LocalBasis b;
+  const int first = patch_local_offset_.at(h->patchIndex);
+  b.count = patch_local_offset_.at(h->patchIndex + 1) - first;
+  for (int i = 0; i < b.count; ++i) {
+    b.point[i] = patch_local_[first + i];
+    b.weight[i] = Jet(w[i], wu[i] * s1, wv[i] * s1, wuu[i] * s2, wuv[i] * s2, wvv[i] * s2);
   }
-  return {acc.begin(), acc.end()};
+  return b;
+}
+
+std::vector<std::pair<int, Jet>> CatmullClarkLimit::basis(int ptex, Vec2 uv) const {
+  const LocalBasis lb = local_basis(ptex, uv);
+  const auto& fp = face_points_[ptex];
+  std::vector<std::pair<int, Jet>> acc;
+  for (int i = 0; i < lb.count; ++i) {
+    const int point = fp[lb.point[i]];
+    const auto v = stencil_vertices(point);
+    const auto w = stencil_weights(point);
+    for (std::size_t k = 0; k < v.size(); ++k) acc.emplace_back(v[k], lb.weight[i] * w[k]);
+  }
+  // Merged by vertex: O(m log m) for the m stencil entries touched.
+  std::stable_sort(acc.begin(), acc.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<std::pair<int, Jet>> out;
+  for (const auto& e : acc) {
+    if (!out.empty() && out.back().first == e.first)
+      out.back().second += e.second;
+    else
+      out.push_back(e);
+  }
+  return out;
 }
 
 Vec3 CatmullClarkLimit::limit_point(int ptex, Vec2 uv, const std::vector<Vec3>& points) const {

@@ -33,13 +33,22 @@ CatmullClarkFacePatch::CatmullClarkFacePatch(std::shared_ptr<const CatmullClarkL
       limit_(std::move(limit)),
       face_(face),
       support_(points_.size(), 0) {
-  // The limit over a (ptex) face depends on the faces around its base face's vertices.
-  const auto& faces = limit_->faces();
-  const auto& mine = faces[limit_->ptex_face(face_)];
-  for (const auto& f : faces)
-    if (std::any_of(f.begin(), f.end(),
-                    [&](int v) { return std::count(mine.begin(), mine.end(), v) > 0; }))
-      for (int v : f) support_[v] = 1;
+  // The limit over a (ptex) face depends on the vertices of its patch points' stencils.
+  for (const int q : limit_->face_points(face_)) {
+    for (const int v : limit_->stencil_vertices(q)) support_[v] = 1;
+    local_.push_back(limit_->patch_point(q, points_));
+  }
+}
+
+void CatmullClarkFacePatch::set_control_point(std::size_t k, const Vec3& p) {
+  Patch::set_control_point(k, p);
+  if (!support_.at(k)) return;
+  const auto& fp = limit_->face_points(face_);
+  for (std::size_t i = 0; i < fp.size(); ++i) {
+    const auto v = limit_->stencil_vertices(fp[i]);
+    if (std::binary_search(v.begin(), v.end(), static_cast<int>(k)))
+      local_[i] = limit_->patch_point(fp[i], points_);
+  }
 }
 
 ControlPointKind CatmullClarkFacePatch::kind(std::size_t k) const {
@@ -54,16 +63,43 @@ void CatmullClarkFacePatch::basis(Vec2 x, std::span<Jet> out) const {
 }
 
 SurfaceJet CatmullClarkFacePatch::evaluate(Vec2 x) const {
-  return combine_sparse(limit_->basis(face_, x), points_);
+  // Relative to the heaviest patch point (partition of unity), as for B-splines: exact zeros
+  // where only coinciding points carry weight.
+  const CatmullClarkLimit::LocalBasis b = limit_->local_basis(face_, x);
+  int best = 0;
+  for (int i = 1; i < b.count; ++i)
+    if (b.weight[i].f > b.weight[best].f) best = i;
+  const Vec3 ref = local_[b.point[best]];
+  SurfaceJet s;
+  s.p = ref;
+  for (int i = 0; i < b.count; ++i) {
+    const Jet& j = b.weight[i];
+    const Vec3 c = local_[b.point[i]] - ref;
+    s.p += j.f * c, s.su += j.fu * c, s.sv += j.fv * c;
+    s.suu += j.fuu * c, s.suv += j.fuv * c, s.svv += j.fvv * c;
+  }
+  return s;
 }
 
 void CatmullClarkFacePatch::influence(std::size_t k, std::span<const Vec2> xs,
                                       std::span<Jet> out) const {
+  std::fill(out.begin(), out.end(), Jet(0.0));
+  if (!support_.at(k)) return;
+  // Vertex k's weight in each patch point of the face, then per sample its patch's sum.
+  const auto& fp = limit_->face_points(face_);
+  std::vector<double> column(fp.size(), 0.0);
+  for (std::size_t i = 0; i < fp.size(); ++i) {
+    const auto v = limit_->stencil_vertices(fp[i]);
+    const auto it = std::lower_bound(v.begin(), v.end(), static_cast<int>(k));
+    if (it != v.end() && *it == static_cast<int>(k))
+      column[i] = limit_->stencil_weights(fp[i])[it - v.begin()];
+  }
   for (std::size_t s = 0; s < xs.size(); ++s) {
-    out[s] = Jet(0.0);
-    if (!support_[k]) continue;
-    for (const auto& [v, j] : limit_->basis(face_, xs[s]))
-      if (static_cast<std::size_t>(v) == k) out[s] = j;
+    const CatmullClarkLimit::LocalBasis b = limit_->local_basis(face_, xs[s]);
+    Jet sum(0.0);
+    for (int i = 0; i < b.count; ++i)
+      if (column[b.point[i]] != 0) sum += b.weight[i] * column[b.point[i]];
+    out[s] = sum;
   }
 }
 

@@ -31,8 +31,11 @@ class CatmullClarkFacePatch final : public Patch {
   const Domain& domain() const override { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
   void basis(Vec2 x, std::span<Jet> out) const override;
+  // O(1) per sample: the 16 or 20 patch points of the sample's limit patch, placed once.
   SurfaceJet evaluate(Vec2 x) const override;
   void influence(std::size_t k, std::span<const Vec2> xs, std::span<Jet> out) const override;
+  // Re-places the patch points whose stencil holds vertex k.
+  void set_control_point(std::size_t k, const Vec3& p) override;
   // Exact for a regular boundary face side (a uniform cubic B-spline segment in Bézier form);
   // otherwise the Bézier curve on the side's limit points at t = 0, 1/3, 2/3, 1 interpolated
   // (the limit side of an irregular face is not one polynomial).
@@ -46,7 +49,8 @@ class CatmullClarkFacePatch final : public Patch {
  private:
   std::shared_ptr<const CatmullClarkLimit> limit_;
   int face_;                   // ptex face
-  std::vector<char> support_;  // vertices that can have non-zero weight on this face
+  std::vector<char> support_;  // vertices with a non-zero stencil weight on this face
+  std::vector<Vec3> local_;    // positions of limit_->face_points(face_)
   UnitSquareDomain domain_;
 };
 

@@ -18,12 +18,14 @@ struct NetworkEdge {
   std::array<int, 2> v{0, 0};  // start and end vertex
   std::array<Vec3, 2> handles{Vec3(0), Vec3(0)};
   std::string name;
+  bool operator==(const NetworkEdge&) const = default;
 };
 
 struct NetworkFace {
   std::vector<int> loop;
   FaceScheme scheme = FaceScheme::Auto;
   std::string name;
+  bool operator==(const NetworkFace&) const = default;
 };
 
 struct Network {
@@ -34,6 +36,7 @@ struct Network {
 
   // The cubic edge e with control points vertex a, h1, h2, vertex b.
   BezierCurve edge_curve(int e) const;
+  bool operator==(const Network&) const = default;
 };
 
 // How face sides use edges; computed by validate_network.

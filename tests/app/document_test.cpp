@@ -2,10 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include "app/document/network_commands.hpp"
 #include "cli_test_util.hpp"
 #include "core/eval/scene_evaluation.hpp"
 #include "core/base/data_error.hpp"
 #include "core/io/scene_io.hpp"
+#include "core/network/network_filling.hpp"
+#include "core/network_test_util.hpp"
 
 namespace pl::test {
 namespace {
@@ -108,6 +111,106 @@ TEST(SceneEvaluation, SyncAfterEditsEqualsFreshEvaluationAndMovesOnlyChangedPoin
     worst = std::max({worst, glm::length(a[i].p - b[i].p), glm::length(a[i].suv - b[i].suv)});
   EXPECT_LT(worst, 1e-13);
   EXPECT_EQ(live.sync(doc.scene()).moved_points, 0u);  // nothing changed, nothing moved
+}
+
+TEST(Document, NudgesOfTheSamePointsMergeIntoOneStepForAMoment) {
+  Document doc(parse_scene(kScene, "s.json"));
+  auto now = Document::Clock::time_point();
+  doc.set_clock([&] { return now; });
+  const std::string original = scene_to_json(doc.scene());
+  const auto nudge = [&](PointRef p, Vec3 d) {
+    now += std::chrono::milliseconds(200);
+    doc.execute(std::make_unique<MovePointsCommand>(std::vector{p},
+                                                    std::vector{point_position(doc.scene(), p) + d},
+                                                    HandleMode::KeepPlane, true));
+  };
+  for (int i = 0; i < 5; ++i) nudge(PointRef::vertex(2), Vec3(0.1, 0, 0));
+  EXPECT_EQ(doc.undo_label(), "nudge vertex 2");
+  EXPECT_LT(glm::length(doc.scene().network->vertices[2] - Vec3(1.5, 1, 0)), 1e-15);
+  ASSERT_TRUE(doc.undo());
+  EXPECT_EQ(scene_to_json(doc.scene()), original);  // five nudges, one step
+  EXPECT_FALSE(doc.can_undo());
+  ASSERT_TRUE(doc.redo());
+
+  nudge(PointRef::vertex(0), Vec3(0, 0.1, 0));  // other points: a step of their own
+  nudge(PointRef::vertex(0), Vec3(0, 0.1, 0));
+  now += std::chrono::seconds(2);  // a pause: a new step
+  nudge(PointRef::vertex(0), Vec3(0, 0.1, 0));
+  ASSERT_TRUE(doc.undo());
+  EXPECT_EQ(doc.scene().network->vertices[0], Vec3(0, 0.2, 0));
+  nudge(PointRef::vertex(0), Vec3(0, 0.1, 0));  // after an undo: a new step
+  ASSERT_TRUE(doc.undo());
+  EXPECT_EQ(doc.scene().network->vertices[0], Vec3(0, 0.2, 0));
+  ASSERT_TRUE(doc.undo());
+  ASSERT_TRUE(doc.undo());
+  EXPECT_EQ(scene_to_json(doc.scene()), original);
+
+  // Typed coordinates are steps of their own, and a save ends a run of nudges.
+  doc.execute(std::make_unique<MovePointsCommand>(std::vector{PointRef::vertex(1)},
+                                                  std::vector{Vec3(1, 0, 1)}));
+  doc.execute(std::make_unique<MovePointsCommand>(std::vector{PointRef::vertex(1)},
+                                                  std::vector{Vec3(1, 0, 2)}));
+  ASSERT_TRUE(doc.undo());
+  EXPECT_EQ(doc.scene().network->vertices[1], Vec3(1, 0, 1));
+  TempDir dir;
+  nudge(PointRef::vertex(1), Vec3(0, 0, 0.5));
+  doc.save_as(dir / "s.json");
+  nudge(PointRef::vertex(1), Vec3(0, 0, 0.5));
+  EXPECT_TRUE(doc.dirty());
+  ASSERT_TRUE(doc.undo());
+  EXPECT_FALSE(doc.dirty());  // the saved state is a step boundary
+}
+
+// The scene every handle-mode test starts from: the default scene, whose vertex 1 has three
+// edges (two faces meet there).
+Scene default_scene() {
+  return read_scene(std::filesystem::path(PATCHLAB_SOURCE_DIR) / "assets/default.json");
+}
+
+double g1_angle(const Scene& s) {
+  const NetworkTopology topo = validate_network(*s.network, "test");
+  const NetworkFilling f = fill_network(*s.network, topo, std::nullopt, "test");
+  EXPECT_TRUE(f.projected_vertices.empty());
+  return max_g1_angle_deg(topo, surfaces(f));
+}
+
+TEST(Document, HandleDragsKeepTheTangentPlaneOrTurnIt) {
+  Document doc(default_scene());
+  const Network& n = *doc.scene().network;
+  ASSERT_EQ(edges_at(n, 1).size(), 3u);
+  const int e = edges_at(n, 1)[0], end = n.edges[e].v[0] == 1 ? 0 : 1;
+  const Vec3 vertex = n.vertices[1], start = n.edges[e].handles[end];
+  const Vec3 plane = *handle_plane_normal(n, 1, std::vector{e});
+  EXPECT_LT(g1_angle(doc.scene()), 1e-6);
+  // Default: the handle slides in the plane of the two other handles; G1 stays.
+  doc.begin_drag({PointRef::handle(e, end)});
+  const Vec3 target = start + Vec3(0.1, -0.2, 0.3);
+  doc.drag_to({target});
+  const Vec3 h = doc.scene().network->edges[e].handles[end];
+  EXPECT_LT(std::fabs(glm::dot(h - vertex, plane)), 1e-15);
+  EXPECT_LT(glm::length(h - (target - glm::dot(target - vertex, plane) * plane)), 1e-15);
+  doc.end_drag();
+  EXPECT_EQ(doc.undo_label(), "move edge " + std::to_string(e) + " handle " + std::to_string(end));
+  EXPECT_LT(g1_angle(doc.scene()), 1e-6);
+  doc.undo();
+
+  // Free: the handle goes exactly where asked, the plane and the other handles turn with it.
+  doc.begin_drag({PointRef::handle(e, end)}, HandleMode::RotatePlane);
+  for (int i = 1; i <= 10; ++i) doc.drag_to({start + 0.03 * i * Vec3(0.1, -0.2, 0.3)});
+  doc.drag_to({target});
+  const Network& m = *doc.scene().network;
+  EXPECT_EQ(m.edges[e].handles[end], target);
+  const Vec3 turned = *handle_plane_normal(m, 1, std::vector{e});
+  for (int other : edges_at(m, 1))
+    EXPECT_LT(std::fabs(glm::dot(end_tangent(m, other, 1), turned)), 1e-14);
+  // Each step starts from the drag's start, so ten steps then the target are the target alone.
+  Scene direct = default_scene();
+  move_handle_turning_plane(*direct.network, e, end, target);
+  EXPECT_EQ(*direct.network, m);
+  doc.end_drag();
+  EXPECT_LT(g1_angle(doc.scene()), 1e-6);
+  doc.undo();
+  EXPECT_EQ(*doc.scene().network, *default_scene().network);
 }
 
 }  // namespace

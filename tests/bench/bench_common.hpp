@@ -36,6 +36,8 @@ inline double median_ms(int repeats, const std::function<void()>& f) {
 void bench_bezier(const Options& options);
 void bench_gb(const Options& options);
 void bench_gb_face(const Options& options);
+void bench_engine(const Options& options);
+void bench_catmull_clark(const Options& options);
 void bench_cad(const Options& options);
 
 }  // namespace pl::bench

@@ -15,6 +15,8 @@ int main(int argc, char** argv) {
   pl::bench::bench_bezier(options);
   pl::bench::bench_gb(options);
   pl::bench::bench_gb_face(options);
+  pl::bench::bench_engine(options);
+  pl::bench::bench_catmull_clark(options);
   pl::bench::bench_cad(options);
   return 0;
 }

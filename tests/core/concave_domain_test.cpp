@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/domain/concave_polygon.hpp"
+#include "core/domain/polygon_triangulation.hpp"
 #include "core/param/mean_value.hpp"
 
 namespace pl {
@@ -80,6 +81,32 @@ TEST(ConcaveDomain, Tessellation) {
     for (int i = 0; i < 6; ++i) hex.emplace_back(std::cos(M_PI * i / 3), std::sin(M_PI * i / 3));
     check(ConcavePolygonDomain(hex), N);
   }
+}
+
+// An axis-aligned interior grid has many points exactly on edges between earlier points of
+// their row or column (whatever the insertion order): each must split that edge, not be dropped.
+TEST(PolygonTriangulation, CollinearInteriorPointsAreAllUsed) {
+  const int N = 12;
+  std::vector<Vec2> p;
+  for (int k = 0; k < N; ++k) p.emplace_back(k, 0);
+  for (int k = 0; k < N; ++k) p.emplace_back(N, k);
+  for (int k = 0; k < N; ++k) p.emplace_back(N - k, N);
+  for (int k = 0; k < N; ++k) p.emplace_back(0, N - k);
+  const std::size_t m = p.size();
+  for (int i = 1; i < N; ++i)
+    for (int j = 1; j < N; ++j) p.emplace_back(i, j);
+  std::vector<bool> used;
+  const auto tris = triangulate_polygon(p, m, {0, N, 2 * N, 3 * N}, &used);
+  EXPECT_EQ(std::count(used.begin(), used.end(), true), long(p.size()));
+  EXPECT_EQ(tris.size(), 2 * p.size() - m - 2);
+  double area = 0;
+  for (const auto& t : tris) {
+    const Vec2 a = p[t[0]], b = p[t[1]], c = p[t[2]];
+    const double twice = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    EXPECT_GT(twice, 0);
+    area += 0.5 * twice;
+  }
+  EXPECT_DOUBLE_EQ(area, double(N * N));
 }
 
 TEST(ConcaveDomain, RejectsInvalidPolygons) {

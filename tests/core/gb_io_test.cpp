@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/base/data_error.hpp"
+#include "core/io/input_limits.hpp"
 #include "core/io/scene_io.hpp"
 #include "gb_test_util.hpp"
 
@@ -21,7 +22,7 @@ GBPatch random_bits_gb(int n, int d, unsigned seed) {
       do {
         const uint64_t bits = rng();
         std::memcpy(&x, &bits, sizeof x);
-      } while (!std::isfinite(x));
+      } while (!std::isfinite(x) || std::fabs(x) > kMaxCoordinate);  // every bit pattern read
       q[c] = x;
     }
   return GBPatch(n, d, std::move(p));

@@ -152,6 +152,23 @@ inline double angle_between_deg(const Vec3& a, const Vec3& b) {
   return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)) * 180 / M_PI;
 }
 
+// The unit normal of face `face` at parameter t of its side `side`. Where the parameterisation
+// is singular (Su x Sv = 0: a corner whose two sides run on in one direction, as at a split
+// edge's vertex) it is the limit along the side, extrapolated from t -+ h and t -+ 2h
+// (Richardson, error O(h^2)).
+inline Vec3 side_normal(const FaceSurface& f, const NetworkTopology& topo, int face, int side,
+                        double t) {
+  const auto raw = [&](double s) {
+    const SurfaceJet j = f.patch->evaluate(side_point(f, topo, face, side, s));
+    return std::pair{glm::cross(j.su, j.sv), glm::length(j.su) * glm::length(j.sv)};
+  };
+  const auto [n, scale] = raw(t);
+  if (glm::length(n) > 1e-12 * scale) return glm::normalize(n);
+  const double h = t < 0.5 ? 1e-5 : -1e-5;
+  return glm::normalize(2.0 * glm::normalize(raw(t + h).first) -
+                        glm::normalize(raw(t + 2 * h).first));
+}
+
 // Largest angle between the two faces' normals along every shared edge, end vertices included.
 inline double max_g1_angle_deg(const NetworkTopology& topo, const std::vector<FaceSurface>& faces) {
   double worst = 0;
@@ -160,10 +177,8 @@ inline double max_g1_angle_deg(const NetworkTopology& topo, const std::vector<Fa
     for (int k = 0; k <= kEdgeSamples; ++k) {
       const double t = double(k) / kEdgeSamples;
       Vec3 nrm[2];
-      for (int s = 0; s < 2; ++s) {
-        const FaceSurface& f = faces[uses[s].face];
-        nrm[s] = unit_normal(*f.patch, side_point(f, topo, uses[s].face, uses[s].side, t));
-      }
+      for (int s = 0; s < 2; ++s)
+        nrm[s] = side_normal(faces[uses[s].face], topo, uses[s].face, uses[s].side, t);
       worst = std::max(worst, angle_between_deg(nrm[0], nrm[1]));
     }
   }
@@ -174,6 +189,18 @@ inline std::vector<FaceSurface> surfaces(const NetworkFilling& filling) {
   std::vector<FaceSurface> out;
   for (const FacePatch& fp : filling.faces) out.push_back({fp.patch.get(), &fp.patch_side});
   return out;
+}
+
+// The largest G1 angle over the shared edges of a from-scratch filling of n (exact derivatives,
+// not an engine's samples) and how many vertices it had to project.
+struct Continuity {
+  double angle_deg = 0;
+  std::size_t projected = 0;
+};
+inline Continuity filled_continuity(const Network& n) {
+  const NetworkTopology topo = validate_network(n, "test");
+  const NetworkFilling filling = fill_network(n, topo, std::nullopt, "test");
+  return {max_g1_angle_deg(topo, surfaces(filling)), filling.projected_vertices.size()};
 }
 
 }  // namespace pl::test

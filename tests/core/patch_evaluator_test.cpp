@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <random>
 
 #include "core/domain/unit_square.hpp"
@@ -149,6 +150,50 @@ TEST(PatchEvaluator, SingularCornerGetsALimitNormalNotNaN) {
     singular += g.status == GeometryStatus::Singular;
   }
   EXPECT_EQ(singular, 7);  // the 7 samples of side u = 0
+}
+
+// Compact storage keeps what the jets storage computes, bit for bit, without the jets: the same
+// positions and geometry after construction and after moves (which evaluate again), and the same
+// verdict on non-finite samples.
+TEST(PatchEvaluator, CompactStorageKeepsTheSamePositionsAndGeometry) {
+  auto a = std::make_shared<BezierPatch>(3, 4, test::random_points(20, 5));
+  auto b = std::shared_ptr<Patch>(a->clone());
+  auto tess = std::make_shared<const Tessellation>(UnitSquareDomain().tessellate(30));
+  PatchEvaluator jets(a, tess), compact(b, tess, SampleStorage::Compact);
+  EXPECT_TRUE(compact.jets().empty());
+  EXPECT_EQ(compact.sample_count(), jets.sample_count());
+  const auto bits = [](const auto& x, const auto& y) {  // NaN included
+    return std::memcmp(&x, &y, sizeof x) == 0;
+  };
+  const auto same = [&] {
+    for (std::size_t i = 0; i < jets.sample_count(); ++i) {
+      ASSERT_TRUE(bits(jets.position(i), compact.position(i))) << i;
+      const SurfaceGeometry &g = jets.geometry()[i], &h = compact.geometry()[i];
+      ASSERT_TRUE(bits(g.normal, h.normal)) << i;
+      ASSERT_TRUE(bits(g.mean, h.mean)) << i;
+      ASSERT_TRUE(bits(g.gaussian, h.gaussian)) << i;
+      ASSERT_EQ(g.status, h.status) << i;
+      ASSERT_EQ(jets.finite(i), compact.finite(i)) << i;
+    }
+  };
+  same();
+  const std::vector<PatchEvaluator::PointMove> moves{{3, Vec3(0.1, 0.2, 0.9)},
+                                                     {7, Vec3(-0.3, 0.5, 0.2)}};
+  jets.evaluate_all();  // columns off: both evaluate the moved patch from scratch
+  for (const auto& m : moves) a->set_control_point(m.k, m.p);
+  jets.evaluate_all();
+  const uint64_t revision = compact.revision();
+  compact.move_control_points(moves);
+  EXPECT_GT(compact.revision(), revision);
+  same();
+  // A non-finite point: every sample it reaches is reported, in both storages.
+  a->set_control_point(0, Vec3(NAN, 0, 0));
+  jets.evaluate_all();
+  compact.move_control_point(0, Vec3(NAN, 0, 0));
+  std::size_t bad = 0;
+  for (std::size_t i = 0; i < compact.sample_count(); ++i) bad += !compact.finite(i);
+  EXPECT_GT(bad, 0u);
+  same();
 }
 
 }  // namespace

@@ -49,7 +49,7 @@ TEST(SceneIo, RoundTripKeepsEveryDoubleBitForBit) {
   s.patches.push_back({"odd numbers", std::make_shared<BezierPatch>(
                                           1, 1,
                                           std::vector<Vec3>{{0.1, 1.0 / 3, 2e-300},
-                                                            {M_PI, -0.0, 1e300},
+                                                            {M_PI, -0.0, 3.7e153},
                                                             {5e-324, 7, 8},
                                                             {0.30000000000000004, 1, 1}})});
   s.view_json = R"({"camera":{"distance":3.5}})";

@@ -99,6 +99,48 @@ TEST(Camera, FramingKeepsEveryCornerInViewBothProjections) {
       }
 }
 
+// Points of a thin wavy strip running diagonally (so its box is mostly empty): frame_points fits
+// the points themselves, so they fill more of the view than the box's corners allow, and every
+// point is inside it.
+TEST(Camera, FramingPointsIsTightAndKeepsEveryPointInView) {
+  std::vector<Vec3> strip;
+  for (int i = 0; i <= 20; ++i)
+    for (int j = 0; j <= 2; ++j) {
+      const double a = -2 + 0.2 * i, b = 0.1 * j;  // along and across the strip
+      strip.emplace_back(0.8 * a - 0.6 * b, 0.6 * a + 0.8 * b, 0.3 * std::sin(0.5 * i));
+    }
+  Box box;
+  for (const Vec3& p : strip) box.add(p);
+  for (bool ortho : {false, true})
+    for (double aspect : {0.75, 4.0 / 3.0}) {
+      Camera tight = preset_camera(ViewPreset::Iso, box, aspect, ortho);
+      const Camera loose = tight;
+      tight.frame_points(strip, aspect);
+      const glm::dmat4 m = tight.projection(aspect) * tight.view();
+      double extent = 0;
+      for (const Vec3& p : strip) {
+        const glm::dvec4 q = m * glm::dvec4(p, 1.0);
+        ASSERT_GT(q.w, 0);
+        EXPECT_LE(std::abs(q.x / q.w), 1 + 1e-9);
+        EXPECT_LE(std::abs(q.y / q.w), 1 + 1e-9);
+        EXPECT_LE(std::abs(q.z / q.w), 1 + 1e-9);
+        extent = std::max({extent, std::abs(q.x / q.w), std::abs(q.y / q.w)});
+      }
+      EXPECT_GT(extent, 1 / 1.08 - 0.05);  // touches the margin
+      if (ortho) {
+        EXPECT_LT(tight.half_height(), loose.half_height());
+      } else {
+        EXPECT_LT(tight.distance, loose.distance);
+      }
+    }
+  // Everything at one place: that place in the middle of a unit box's view, not a zero distance.
+  Camera one;
+  const std::vector<Vec3> same(4, Vec3(1, 2, 3));
+  one.frame_points(same, 1.0);
+  expect_near(one.target, Vec3(1, 2, 3));
+  EXPECT_GT(one.distance, 1.0);
+}
+
 TEST(Camera, OrbitPanZoom) {
   Camera c = preset_camera(ViewPreset::Front, unit_box(), 1.0);
   const double d = c.distance;

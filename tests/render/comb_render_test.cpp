@@ -37,10 +37,7 @@ TEST(CombMode, ParsesCombsAsAnOverlay) {
 // A flat grey square at z = 0 with a cubic arc above it, bulging towards +y and rising in z.
 DrawScene arc_scene() {
   DrawScene d;
-  std::vector<Vec3> square;
-  for (int i = 0; i < 2; ++i)
-    for (int j = 0; j < 2; ++j) square.emplace_back(-1.5 + 3 * i, -1.5 + 3 * j, 0);
-  d.surfaces.push_back(test::bezier_mesh(1, 1, square, 4, "floor"));
+  d.surfaces.push_back(test::floor_square(1.5));
   const BezierCurve arc({{-1, -0.5, 0.2}, {-0.6, 0.9, 0.3}, {0.6, 0.9, 0.3}, {1, -0.5, 0.2}});
   Polyline l;
   for (int i = 0; i <= 64; ++i) l.push_back(arc.point(i / 64.0));
@@ -85,7 +82,7 @@ CombPixels measure_combs(const DrawScene& scene, Segments segments) {
   r.height = 300;
   r.settings = parse_display_mode("shaded+network");
   r.camera = preset_camera(ViewPreset::Top, scene.bounds(), 400.0 / 300.0);
-  r.panels.push_back({&gpu, ""});
+  r.panels.emplace_back().scene = &gpu;
   const Image plain = render_frame(renderer, r);
   r.settings = parse_display_mode("shaded+network+combs");
   const Image combs = render_frame(renderer, r);
@@ -150,10 +147,7 @@ TEST(CombRender, CombPixelsLieOnTheProjectedTeethAndEnvelope) {
 // scale * tooth squared overflows a float.
 DrawScene cusp_scene(double delta) {
   DrawScene d;
-  std::vector<Vec3> square;
-  for (int i = 0; i < 2; ++i)
-    for (int j = 0; j < 2; ++j) square.emplace_back(-1.5 + 3 * i, -1.5 + 3 * j, 0);
-  d.surfaces.push_back(test::bezier_mesh(1, 1, square, 4, "floor"));
+  d.surfaces.push_back(test::floor_square(1.5));
   const BezierCurve c({{-1, -0.6, 0.2}, {1, 0.4, 0.2}, {-1 + delta, 0.4, 0.2}, {1, -0.6, 0.2}});
   Polyline l;
   for (int i = 0; i <= 64; ++i) l.push_back(c.point(i / 64.0));

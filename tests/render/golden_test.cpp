@@ -1,13 +1,7 @@
-// Golden images: small renders of canonical scenes in each mode, compared pixel by pixel with
-// tests/data/golden/NAME.png. Regenerate after an intended visual change with
-//   PATCHLAB_UPDATE_GOLDENS=1 build/tests/patchlab_render_tests --gtest_filter='Golden*'
-// and look at the new PNGs before committing them.
-#include <stb_image.h>  // implementation compiled into Debian's libstb
+// Golden images of a canonical bicubic saddle in each mode (golden.hpp compares them).
+#include "golden.hpp"
 
 #include <algorithm>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
 
 #include "core/curve/curvature_comb.hpp"
 #include "render/frame.hpp"
@@ -16,15 +10,6 @@
 
 namespace pl {
 namespace {
-
-// Per channel, in 8-bit levels: absorbs rasteriser rounding differences between Mesa versions
-// on smooth shading and colour ramps.
-constexpr int kChannelTolerance = 8;
-// Pixels allowed beyond that: antialiased silhouettes and line edges may move by a sample.
-constexpr double kOutlierFraction = 0.003;
-
-const std::filesystem::path kGoldenDir =
-    std::filesystem::path(PATCHLAB_SOURCE_DIR) / "tests" / "data" / "golden";
 
 DrawScene saddle_scene() {
   DrawScene d;
@@ -54,49 +39,19 @@ Image render(const DrawScene& scene, const std::string& mode, ViewPreset view, i
   SceneRenderer renderer;
   GpuScene gpu(scene);
   FrameRequest r;
-  r.width = 160 * panels;
-  r.height = 120;
+  r.width = 320 * panels;
+  r.height = 240;
   r.settings = parse_display_mode(mode);
   std::vector<const SurfaceMesh*> meshes;
   for (const SurfaceMesh& m : scene.surfaces) meshes.push_back(&m);
   r.range = automatic_range(meshes, r.settings.curvature);
-  r.camera = preset_camera(view, scene.bounds(),
-                           panel_aspect(r.width, r.height, panels, r.settings, r.range));
-  for (int i = 0; i < panels; ++i) r.panels.push_back({&gpu, panels > 1 ? "A" : ""});
+  for (int i = 0; i < panels; ++i) {
+    FramePanel& p = r.panels.emplace_back();
+    p.scene = &gpu;
+    if (panels > 1) p.label.push_back('A');
+  }
+  r.camera = preset_camera(view, scene.bounds(), panel_aspect(r));
   return render_frame(renderer, r);
-}
-
-void compare_with_golden(const std::string& name, const Image& image) {
-  const auto path = kGoldenDir / (name + ".png");
-  const char* update = std::getenv("PATCHLAB_UPDATE_GOLDENS");
-  if (update && std::string(update) == "1") {
-    std::filesystem::create_directories(kGoldenDir);
-    std::ofstream(path, std::ios::binary) << encode_png(image);
-    std::cout << "updated " << path << "\n";
-    return;
-  }
-  int w = 0, h = 0, channels = 0;
-  stbi_uc* golden = stbi_load(path.string().c_str(), &w, &h, &channels, 4);
-  ASSERT_NE(golden, nullptr) << "missing golden " << path
-                             << " (create it with PATCHLAB_UPDATE_GOLDENS=1)";
-  ASSERT_EQ(w, image.width);
-  ASSERT_EQ(h, image.height);
-  int outliers = 0, worst = 0;
-  for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
-    int d = 0;
-    for (int k = 0; k < 4; ++k) d = std::max(d, std::abs(int(golden[i + k]) - image.rgba[i + k]));
-    worst = std::max(worst, d);
-    if (d > kChannelTolerance) ++outliers;
-  }
-  stbi_image_free(golden);
-  const int allowed = static_cast<int>(kOutlierFraction * w * h);
-  if (outliers > allowed) {
-    const auto actual = std::filesystem::temp_directory_path() / (name + ".actual.png");
-    std::ofstream(actual, std::ios::binary) << encode_png(image);
-    ADD_FAILURE() << name << ": " << outliers << " pixels differ by more than " << kChannelTolerance
-                  << " levels (allowed " << allowed << ", worst " << worst
-                  << "); this render is in " << actual;
-  }
 }
 
 struct GoldenCase {
@@ -111,7 +66,7 @@ class Golden : public ::testing::TestWithParam<GoldenCase> {};
 TEST_P(Golden, MatchesStoredImage) {
   PATCHLAB_REQUIRE_GL();
   const GoldenCase& c = GetParam();
-  compare_with_golden(c.name, render(saddle_scene(), c.mode, c.view, c.panels));
+  test::compare_with_golden(c.name, render(saddle_scene(), c.mode, c.view, c.panels));
 }
 
 INSTANTIATE_TEST_SUITE_P(

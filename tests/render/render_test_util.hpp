@@ -8,12 +8,17 @@
 #include <memory>
 #include <string>
 
+#include "app/cli/draw_scene_builder.hpp"
+#include "app/cli/load_input.hpp"
 #include "core/domain/tessellation_cache.hpp"
 #include "core/eval/patch_evaluator.hpp"
 #include "core/mesh/surface_mesh.hpp"
 #include "core/patch/bezier_patch.hpp"
+#include "render/default_view.hpp"
 #include "render/draw_scene.hpp"
 #include "render/egl_context.hpp"
+#include "render/frame.hpp"
+#include "render/gpu_scene.hpp"
 #include "render/scene_renderer.hpp"
 
 namespace pl::test {
@@ -47,6 +52,34 @@ inline SurfaceMesh bezier_mesh(int m, int n, std::vector<Vec3> points, int densi
   return make_surface_mesh(ev, name);
 }
 
+// The square [-half, half]^2 at height z, as a bilinear patch's mesh.
+inline SurfaceMesh floor_square(double half, double z = 0, const std::string& name = "floor") {
+  std::vector<Vec3> corners;
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) corners.emplace_back(-half + 2 * half * i, -half + 2 * half * j, z);
+  return bezier_mesh(1, 1, corners, 4, name);
+}
+
+// A one-panel frame of `scene` (uploaded as `gpu`) with these settings: the colour range
+// automatic over its surfaces, the camera the default view (as `patchlab render` without
+// --view) or a preset.
+inline FrameRequest one_panel(const GpuScene& gpu, const DrawScene& scene,
+                              const DisplaySettings& settings, int width, int height,
+                              std::optional<ViewPreset> view = {}) {
+  FrameRequest r;
+  r.width = width;
+  r.height = height;
+  r.settings = settings;
+  r.panels.emplace_back().scene = &gpu;
+  std::vector<const SurfaceMesh*> meshes;
+  for (const SurfaceMesh& m : scene.surfaces) meshes.push_back(&m);
+  r.range = automatic_range(meshes, settings.curvature);
+  const DrawScene* scenes[] = {&scene};
+  r.camera = view ? preset_camera(*view, scene.bounds(), panel_aspect(r))
+                  : default_camera(scenes, panel_aspect(r));
+  return r;
+}
+
 // z = (x^2 + y^2) / 2 over [-1, 1]^2, exactly, as a biquadratic patch: x = 2u - 1 is linear in u,
 // and x^2 has Bernstein coefficients (1, -1, 1).
 inline std::vector<Vec3> paraboloid_points() {
@@ -68,6 +101,19 @@ inline std::vector<Vec3> saddle_points() {
   // Bernstein coefficients of x^2 on [-1,1] are not the samples; the lifted inner points make it
   // a genuine saddle-like bicubic either way.
   return p;
+}
+
+// A scene file (.json or .gbp) as the `render` command draws it (no combs), or with one filling
+// scheme for its network faces.
+inline DrawScene file_draw_scene(const std::string& path, std::optional<FaceScheme> scheme = {},
+                                 int density = 24) {
+  const Scene scene = load_input(path);
+  static TessellationCache cache;
+  return build_draw_scene(scene, evaluate_scene(scene, density, scheme, cache, path), 0);
+}
+
+inline std::string asset(const std::string& name) {
+  return std::string(PATCHLAB_SOURCE_DIR) + "/assets/" + name;
 }
 
 }  // namespace pl::test

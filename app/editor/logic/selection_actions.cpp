@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "app/document/network_commands.hpp"
 #include "app/editor/logic/selection_properties.hpp"
 
 namespace pl {
@@ -15,7 +16,7 @@ class CommandSequence final : public Command {
  public:
   CommandSequence(std::string label, std::vector<std::unique_ptr<Command>> commands)
       : label_(std::move(label)), commands_(std::move(commands)) {}
-  void apply(Scene& scene) const override {
+  void apply(Scene& scene) override {
     for (const auto& c : commands_) c->apply(scene);
   }
   std::string label() const override { return label_; }
