@@ -241,6 +241,7 @@ void Editor::register_actions() {
     Action a = make_action(id, "Tools", tool.name(), keys, tool.hint(), [this, i] {
       ToolContext ctx = tool_context();
       tools_.activate(i, ctx);
+      if (tools_.active().places_on_work_plane()) work_plane_.shown = true;
     });
     a.checked = [this, i] { return tools_.active_index() == i; };
     r.add(std::move(a));

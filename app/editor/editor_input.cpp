@@ -204,7 +204,9 @@ void Editor::handle_mouse() {
   const DisplaySettings& d = prefs_.display;
   mouse_.under = pickers_[mouse_.panel].pick(scene, nav_.camera(), rect, mouse,
                                              {d.control_net, d.network_curves});
-  if (prefs_.show_probe && mouse_.under.point < 0 && mouse_.under.surface) {
+  // The probe reads the surface itself: over a point or a curve it would hide what is picked.
+  if (prefs_.show_probe && mouse_.under.point < 0 && mouse_.under.edge < 0 &&
+      mouse_.under.surface) {
     const SurfaceHit& h = *mouse_.under.surface;
     mouse_.probe =
         probe_at(scene.meshes[h.surface], h.surface, h.hit, window_ray(nav_.camera(), rect, mouse));

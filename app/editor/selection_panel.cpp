@@ -88,9 +88,12 @@ void edge_section(const SidePanel& p, const EdgeProperties& e) {
              [&](const std::string& n) { return std::make_shared<SetEdgeNameCommand>(e.edge, n); });
   field("vertices", std::to_string(e.from) + " -> " + std::to_string(e.to));
   field("length", fmt("%.6g", e.length));
+  // Named as faces, so that "face 0" does not read as a count.
   std::string faces;
-  for (int f : e.faces) faces += (faces.empty() ? "" : ", ") + std::to_string(f);
-  field("faces", faces.empty() ? "none (a boundary of nothing)" : faces);
+  for (int f : e.faces) faces += (faces.empty() ? "" : " and ") + std::to_string(f);
+  field("faces", e.faces.empty()       ? "none (a boundary of nothing)"
+                 : e.faces.size() == 1 ? "face " + faces
+                                       : "faces " + faces);
 }
 
 // The vertex's tangent plane: fitted to its edges or fixed (through the Network > Tangent Plane

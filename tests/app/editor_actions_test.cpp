@@ -80,6 +80,17 @@ TEST(EditorActions, MenusKeysAndContext) {
 
   ASSERT_EQ(r.for_context(ContextTarget::Face).size(), 1u);
   EXPECT_TRUE(r.for_context(ContextTarget::Empty).empty());
+  // One menu's actions come together, whatever their place in the table.
+  Action del = counting("edit.delete", "Edit", close), ren = counting("edit.rename", "Edit", close);
+  Action top = counting("view.top", "View", frame);
+  del.context = ren.context = top.context = context_bit(ContextTarget::Face);
+  r.add(std::move(del));
+  r.add(std::move(top));
+  r.add(std::move(ren));
+  std::vector<std::string> ids;
+  for (const Action* a : r.for_context(ContextTarget::Face)) ids.push_back(a->id);
+  EXPECT_EQ(ids,
+            (std::vector<std::string>{"face.scheme.gb", "edit.delete", "edit.rename", "view.top"}));
   EXPECT_TRUE(r.conflicts().empty());
   r.add(counting("other.save", "Other", save, {*parse_chord("Ctrl+S")}));
   ASSERT_EQ(r.conflicts().size(), 1u);

@@ -77,6 +77,8 @@ struct AuthoringTools : ::testing::Test {
 
 TEST_F(AuthoringTools, AddVertexClicksLandOnTheWorkPlaneAndSelectTheNewVertex) {
   AddVertexTool tool;
+  EXPECT_TRUE(tool.places_on_work_plane());  // the editor shows the plane's grid for it
+  EXPECT_FALSE(AddEdgeTool().places_on_work_plane());
   const Vec2 px = pixel_of(Vec3(0.25, -0.5, 0));
   EXPECT_FALSE(tool.press(ctx, at(px)));  // a drag orbits
   tool.hover(ctx, at(px));

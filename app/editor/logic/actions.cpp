@@ -166,6 +166,15 @@ std::vector<const Action*> ActionRegistry::for_context(ContextTarget target) con
   std::vector<const Action*> r;
   for (const Action& a : actions_)
     if (a.context & context_bit(target)) r.push_back(&a);
+  // Tables add actions by feature, so one menu's may be apart ("Edit/Delete" with the authoring
+  // actions, "Edit/Rename" later): the menu shows each menu's once, as one group.
+  std::vector<std::string> order;
+  for (const Action* a : r)
+    if (std::find(order.begin(), order.end(), a->menu) == order.end()) order.push_back(a->menu);
+  std::stable_sort(r.begin(), r.end(), [&](const Action* x, const Action* y) {
+    return std::find(order.begin(), order.end(), x->menu) <
+           std::find(order.begin(), order.end(), y->menu);
+  });
   return r;
 }
 

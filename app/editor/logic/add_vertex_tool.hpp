@@ -19,6 +19,7 @@ class AddVertexTool final : public Tool {
   void hover(ToolContext& ctx, const PointerEvent& e) override { target_ = placement(ctx, e); }
   void leave() override { target_.reset(); }
   ToolPreview preview(const ToolContext& ctx) const override;
+  bool places_on_work_plane() const override { return true; }
 
   // Adds a vertex at p and selects it (`add_to_selection`: keeps what was selected). Returns the
   // new vertex, or -1 when refused (a non-finite position).

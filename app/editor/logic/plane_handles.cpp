@@ -50,6 +50,7 @@ std::optional<VertexPlane> vertex_plane(const Network& n, int v) {
   }
   plane.normal = *normal;
   if (glm::dot(plane.normal, corner_normals(n, v)) < 0) plane.normal = -plane.normal;
+  plane.normal += Vec3(0.0);  // -0 shown as 0 in the panel
   return plane;
 }
 

@@ -93,6 +93,8 @@ class Tool {
   virtual bool can_finish(const ToolContext&) const { return false; }
   virtual void finish(ToolContext&) {}
   virtual ToolPreview preview(const ToolContext&) const { return {}; }
+  // Clicks put points on the work plane: the editor shows its grid while the tool is chosen.
+  virtual bool places_on_work_plane() const { return false; }
 };
 
 // Where a click at `e` puts a new point: on the surface under the cursor, else where the
