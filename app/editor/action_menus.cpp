@@ -47,6 +47,8 @@ void draw_menu_bar(const ActionRegistry& actions) {
   for (const std::string& menu : actions.menus())
     if (ImGui::BeginMenu(menu.c_str())) {
       menu_entries(actions, menu);
+      // Esc closes an open menu, as the context menu (the editor takes no keys meanwhile).
+      if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) ImGui::CloseCurrentPopup();
       ImGui::EndMenu();
     }
   ImGui::EndMainMenuBar();
