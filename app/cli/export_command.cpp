@@ -6,6 +6,7 @@
 #include "app/cli/commands.hpp"
 #include "app/cli/load_input.hpp"
 #include "app/cli/work_limits.hpp"
+#include "core/analysis/curve_analysis.hpp"
 #include "core/cad/cad_export.hpp"
 #include "core/eval/scene_surfaces.hpp"
 #include "core/io/input_limits.hpp"
@@ -56,6 +57,8 @@ int run_export(std::span<const std::string> args, std::ostream& out, std::ostrea
   std::vector<SurfaceMesh> meshes;
   for (const SceneSurface& s : surfaces.surfaces)
     meshes.push_back(make_surface_mesh(*s.evaluator, s.name));
+  for (std::size_t i = 0; i < scene.curves.size(); ++i)
+    check_curve_finite(scene.curves[i], i, density, file);
   std::vector<CurvePolyline> polylines;
   if (mesh_format_for(*target) == MeshFormat::Obj)
     for (std::size_t i = 0; i < scene.curves.size(); ++i)

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/base/data_error.hpp"
 #include "core/curve/curvature.hpp"
 
 namespace pl {
@@ -140,6 +141,21 @@ CurveReport analyze_curve(const SceneCurve& c, const std::string& name, int per_
   if (r.curvature[0] > r.curvature[1]) r.curvature = {0, 0};
   r.inflections = curve_inflections(c, per_span);
   return r;
+}
+
+void check_curve_finite(const SceneCurve& c, std::size_t index, int per_span,
+                        const std::string& source) {
+  auto finite = [](const Vec3& v) { return std::isfinite(v.x + v.y + v.z); };
+  for (double t : curve_sample_parameters(c, per_span)) {
+    const CurvePoint p = evaluate(c, t);
+    if (!finite(p.p) || !finite(p.d1) || !finite(p.d2) || !std::isfinite(curve_curvature(p)))
+      throw DataError(source, "curves[" + std::to_string(index) + "]",
+                      "the curve is not finite at t = " + std::to_string(t) +
+                          " (its numbers overflow when evaluated)");
+  }
+  if (!std::isfinite(curve_length(c)))
+    throw DataError(source, "curves[" + std::to_string(index) + "]",
+                    "the curve's length is not finite (its numbers overflow when evaluated)");
 }
 
 Vec3 curvature_vector(const CurvePoint& c) {

@@ -46,6 +46,13 @@ JointReport joint_figures(const CurvePoint& a, const CurvePoint& b);
 // closed curve.
 std::vector<JointReport> curve_joints(std::span<const SceneCurve> curves);
 
+// Throws DataError(source, "curves[index]", ...) naming the first parameter where the curve's
+// position, derivatives, curvature or arc length are not finite (numbers in range whose
+// products overflow, e.g. a huge weight on a huge coordinate): the figures, pictures and
+// exports of a curve are finite or refused.
+void check_curve_finite(const SceneCurve& c, std::size_t index, int per_span,
+                        const std::string& source);
+
 // Curvature vector kappa N = (C'' - (C''.T) T) / |C'|^2: the same whichever way the curve runs.
 Vec3 curvature_vector(const CurvePoint& c);
 

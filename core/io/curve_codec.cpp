@@ -1,7 +1,9 @@
 #include "core/io/curve_codec.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
+#include "core/io/input_limits.hpp"
 #include "core/io/patch_codec.hpp"
 #include "core/math/bspline_basis.hpp"
 
@@ -35,6 +37,9 @@ std::vector<double> read_curve_knots(const JsonNode& node, int p, std::size_t n)
   std::vector<double> U;
   for (std::size_t i = 0; i < items.size(); ++i) {
     U.push_back(items[i].number());
+    if (std::abs(U[i]) > kMaxCoordinate)
+      items[i].fail("knot " + short_number(U[i]) + " is out of range: |t| <= " +
+                    short_number(kMaxCoordinate) + " keeps knot differences finite");
     if (i > 0 && U[i] < U[i - 1])
       items[i].fail("knots must not decrease (" + short_number(U[i]) + " after " +
                     short_number(U[i - 1]) + ")");

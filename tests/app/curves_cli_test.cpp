@@ -73,6 +73,12 @@ std::vector<BadCurve> bad_curves() {
       {"weights on a bspline",
        R"({"type":"bspline","degree":2,"points":)" + pts4 + R"(,"weights":[1,1,1,1]})",
        "curves[0].weights"},
+      {"knot out of range",
+       R"({"type":"bspline","degree":1,"points":[[0,0,0],[1,1,0]],"knots":[-1e308,-1e308,1e308,1e308]})",
+       "curves[0].knots[0]"},
+      {"numbers that overflow when evaluated",
+       R"({"type":"nurbs","degree":2,"points":[[0,0,0],[1e150,1,0],[2,0,0]],"weights":[1,1e300,1]})",
+       "curves[0]"},
       {"all points in one place", R"({"type":"bezier","points":[[1,1,1],[1,1,1]]})",
        "curves[0].points"},
   };
