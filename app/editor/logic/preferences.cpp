@@ -79,6 +79,7 @@ std::string preferences_to_text(const Preferences& p) {
     << "coarse_density = " << p.coarse_density << "\n"
     << "ui_scale = " << p.ui_scale << "\n"
     << "show_probe = " << p.show_probe << "\n"
+    << "continuity_threshold_deg = " << p.continuity_threshold_deg << "\n"
     << "screenshot_width = " << p.screenshot_width << "\n"
     << "screenshot_height = " << p.screenshot_height << "\n"
     << "screenshot_transparent = " << p.screenshot_transparent << "\n"
@@ -142,6 +143,9 @@ Preferences preferences_from_text(const std::string& text) {
       p.ui_scale = x;
     } else if (key == "show_probe") {
       flag(p.show_probe);
+    } else if (key == "continuity_threshold_deg" && parse_double(value, x) &&
+               x >= kMinContinuityThresholdDeg && x <= kMaxContinuityThresholdDeg) {
+      p.continuity_threshold_deg = x;
     } else if (key == "screenshot_width" && parse_int(value, i, 16, 8192)) {
       p.screenshot_width = i;
     } else if (key == "screenshot_height" && parse_int(value, i, 16, 8192)) {

@@ -16,6 +16,8 @@ struct Preferences {
   int coarse_density = 16;  // while dragging
   double ui_scale = 0;      // 0: from the monitor's content scale
   bool show_probe = true;
+  // The Continuity panel warns only about edges whose normal angle exceeds this (degrees).
+  double continuity_threshold_deg = 0.1;
   int screenshot_width = 1920, screenshot_height = 1080;
   bool screenshot_transparent = false;
   std::string last_directory;
@@ -24,6 +26,8 @@ struct Preferences {
 // The ranges of the comb controls (Display panel sliders, accepted preference values).
 inline constexpr double kMinCombScale = 0.05, kMaxCombScale = 20.0;
 inline constexpr int kMinCombTeeth = 2, kMaxCombTeeth = 200;
+// The continuity warning threshold accepted from the panel or the file (degrees).
+inline constexpr double kMinContinuityThresholdDeg = 1e-6, kMaxContinuityThresholdDeg = 90.0;
 
 Preferences default_preferences();  // isophotes on, control net and curves shown
 std::string preferences_to_text(const Preferences& p);

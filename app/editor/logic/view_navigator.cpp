@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/default_view.hpp"
+
 namespace pl {
 
 void ViewNavigator::frame(const Box& box, double aspect) {
@@ -29,9 +31,28 @@ void ViewNavigator::preset(ViewPreset p, const Box& scene, double aspect) {
   framed_ = true;
 }
 
-void ViewNavigator::begin(Gesture g, const Vec2& pixel, const Vec3& pivot) {
+void ViewNavigator::open_view(std::span<const DrawScene* const> scenes, double aspect) {
+  const bool ortho = camera_.orthographic;
+  if (framing_points(scenes).empty())
+    camera_ = preset_camera(ViewPreset::Iso, Box{Vec3(-1), Vec3(1)}, aspect, ortho);
+  else
+    camera_ = default_camera(scenes, aspect);
+  camera_.orthographic = ortho;
+  framed_ = true;
+}
+
+void ViewNavigator::frame_tightly(std::span<const DrawScene* const> scenes, double aspect) {
+  const std::vector<Vec3> points = framing_points(scenes);
+  if (points.empty()) return;
+  camera_.frame_points(points, aspect);
+  framed_ = true;
+}
+
+void ViewNavigator::begin(Gesture g, const Vec2& pixel, const Vec3& pivot, const Box& scene) {
   gesture_ = g;
   pivot_ = pivot;
+  keep_.reset();
+  if (!scene.empty()) keep_ = scene.centre();
   press_ = last_ = pixel;
   travel_ = 0;
 }
@@ -42,9 +63,11 @@ void ViewNavigator::move(const Vec2& pixel, const ViewRect& rect) {
   last_ = pixel;
   travel_ = std::max(travel_, glm::length(pixel - press_));
   if (d == Vec2(0)) return;
-  if (gesture_ == Gesture::Orbit)
+  if (gesture_ == Gesture::Orbit) {
+    const auto was = keep_ ? project_to_window(camera_, rect, *keep_) : std::nullopt;
     orbit_about(camera_, pivot_, -d.x * kOrbitRadiansPerPixel, d.y * kOrbitRadiansPerPixel);
-  else
+    if (was) keep_in_view(camera_, rect, *keep_, *was);
+  } else
     pan_pixels(camera_, rect, d.x, d.y);
 }
 

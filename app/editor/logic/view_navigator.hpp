@@ -5,7 +5,11 @@
 // opens the context menu for the right button). GUI-free and unit-tested.
 #pragma once
 
+#include <optional>
+#include <span>
+
 #include "app/editor/logic/camera_control.hpp"
+#include "render/draw_scene.hpp"
 
 namespace pl {
 
@@ -26,9 +30,18 @@ class ViewNavigator {
   void frame_closely(const Box& box, double aspect);
   // A preset direction framing `scene`; keeps orthographic or perspective.
   void preset(ViewPreset preset, const Box& scene, double aspect);
+  // The view a document opens with: default_camera of the scenes drawn side by side, which
+  // faces a single patch's front (a .gbp seen from behind would show its back) and frames what
+  // is drawn tightly at this panel aspect, so each half of the comparison is filled. With
+  // nothing drawn (a new scene): the iso view of the cube [-1, 1]^3, where new points go.
+  void open_view(std::span<const DrawScene* const> scenes, double aspect);
+  // Frames what the scenes draw tightly (Camera::frame_points) from the current direction.
+  void frame_tightly(std::span<const DrawScene* const> scenes, double aspect);
 
-  // Gestures: begin at the press, move with every cursor position, end at the release.
-  void begin(Gesture gesture, const Vec2& pixel, const Vec3& pivot);
+  // Gestures: begin at the press, move with every cursor position, end at the release. An
+  // orbit about a pivot away from the scene's centre (`scene`: its bounds, when known) keeps
+  // that centre in the middle part of the view (keep_in_view), so the model stays on screen.
+  void begin(Gesture gesture, const Vec2& pixel, const Vec3& pivot, const Box& scene = {});
   void move(const Vec2& pixel, const ViewRect& rect);
   // Ends the gesture. True when it was a click: the cursor never went further than the slop
   // from where it was pressed.
@@ -44,6 +57,7 @@ class ViewNavigator {
   bool framed_ = false;
   Gesture gesture_ = Gesture::None;
   Vec3 pivot_{0.0};
+  std::optional<Vec3> keep_;  // the scene's centre, kept in view while orbiting
   Vec2 press_{0.0}, last_{0.0};
   double travel_ = 0;  // furthest distance from the press
 };
