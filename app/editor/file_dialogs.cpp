@@ -139,15 +139,22 @@ void FileDialogs::draw(Preferences& prefs, float s, bool compare, const std::str
   }
   if (ImGui::BeginPopupModal("Report###report", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::TextUnformatted(report_title_.c_str());
-    // Read-only text: scrolls, and can be selected and copied.
-    const ImVec2 size(ImGui::GetFontSize() * 46, std::min(ImGui::GetTextLineHeight() * 22,
-                                                          ImGui::GetMainViewport()->Size.y * 0.6f));
-    ImGui::InputTextMultiline("##report", report_text_.data(), report_text_.size() + 1, size,
-                              ImGuiInputTextFlags_ReadOnly);
+    // As wide as its longest line when the window allows (else it scrolls), as tall as its
+    // lines up to 60 % of the window.
+    const ImVec2 text = ImGui::CalcTextSize(report_text_.c_str());
+    const ImVec2 most = ImGui::GetMainViewport()->Size;
+    const ImGuiStyle& st = ImGui::GetStyle();
+    const ImVec2 size(std::min(text.x + 2 * st.WindowPadding.x + st.ScrollbarSize, most.x * 0.85f),
+                      std::min(text.y + 2 * st.WindowPadding.y + st.ScrollbarSize, most.y * 0.6f));
+    ImGui::BeginChild("##report", size, true, ImGuiWindowFlags_HorizontalScrollbar);
+    ImGui::TextUnformatted(report_text_.c_str());
+    ImGui::EndChild();
     const bool keys = !ImGui::IsWindowAppearing();
     if (ImGui::Button("OK", ImVec2(120 * s, 0)) ||
         (keys && (ImGui::IsKeyPressed(GLFW_KEY_ENTER) || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE))))
       ImGui::CloseCurrentPopup();
+    ImGui::SameLine();
+    if (ImGui::Button("Copy", ImVec2(120 * s, 0))) ImGui::SetClipboardText(report_text_.c_str());
     ImGui::EndPopup();
   }
 
