@@ -73,6 +73,15 @@ bool draw_display_section(const SidePanel& p) {
     ImGui::SliderInt("Comb teeth", &d.comb_teeth, kMinCombTeeth, kMaxCombTeeth);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Teeth per curve");
   }
+  // The interface's size: the monitor's content scale unless the user picks one (applied from
+  // the next frame, kept in the preferences).
+  static const double kScales[] = {0, 1.0, 1.25, 1.5, 1.75, 2.0};
+  static const char* kScaleNames[] = {"Auto (monitor)", "100 %", "125 %",
+                                      "150 %",          "175 %", "200 %"};
+  int scale = 0;
+  for (int i = 0; i < 6; ++i)
+    if (p.prefs.ui_scale == kScales[i]) scale = i;
+  if (ImGui::Combo("Interface", &scale, kScaleNames, 6)) p.prefs.ui_scale = kScales[scale];
   int densities[2] = {p.prefs.coarse_density, p.prefs.fine_density};
   if (ImGui::SliderInt2("Density", densities, 4, 96)) {
     p.prefs.coarse_density = densities[0];

@@ -48,11 +48,12 @@ void ViewNavigator::frame_tightly(std::span<const DrawScene* const> scenes, doub
   framed_ = true;
 }
 
-void ViewNavigator::begin(Gesture g, const Vec2& pixel, const Vec3& pivot, const Box& scene) {
+void ViewNavigator::begin(Gesture g, const Vec2& pixel, const Vec3& pivot,
+                          std::vector<Vec3> model) {
   gesture_ = g;
   pivot_ = pivot;
-  keep_.reset();
-  if (!scene.empty()) keep_ = scene.centre();
+  model_ = std::move(model);
+  start_.reset();
   press_ = last_ = pixel;
   travel_ = 0;
 }
@@ -64,9 +65,10 @@ void ViewNavigator::move(const Vec2& pixel, const ViewRect& rect) {
   travel_ = std::max(travel_, glm::length(pixel - press_));
   if (d == Vec2(0)) return;
   if (gesture_ == Gesture::Orbit) {
-    const auto was = keep_ ? project_to_window(camera_, rect, *keep_) : std::nullopt;
+    // Where the model was when the orbit began: it never gets further out of place than that.
+    if (!start_) start_ = screen_box(camera_, rect, model_);
     orbit_about(camera_, pivot_, -d.x * kOrbitRadiansPerPixel, d.y * kOrbitRadiansPerPixel);
-    if (was) keep_in_view(camera_, rect, *keep_, *was);
+    keep_in_view(camera_, rect, model_, *start_);
   } else
     pan_pixels(camera_, rect, d.x, d.y);
 }
@@ -79,6 +81,31 @@ bool ViewNavigator::end() {
 
 void ViewNavigator::wheel(const ViewRect& rect, const Vec2& pixel, double notches) {
   if (notches != 0) zoom_at(camera_, rect, pixel, std::pow(kWheelZoom, notches));
+}
+
+std::vector<Vec3> orbit_sample(std::span<const DrawScene* const> scenes, std::size_t most) {
+  std::size_t total = 0;
+  for (const DrawScene* s : scenes) {
+    for (const SurfaceMesh& m : s->surfaces) total += m.positions.size();
+    total += s->net.points.size();
+    for (const auto& c : s->network_curves) total += c.size();
+  }
+  const std::size_t stride =
+      std::max<std::size_t>(1, (total + most - 1) / std::max<std::size_t>(most, 1));
+  std::vector<Vec3> out;
+  out.reserve(total / stride + 1);
+  std::size_t i = 0;
+  auto take = [&](const Vec3& p) {
+    if (i++ % stride == 0) out.push_back(p);
+  };
+  for (const DrawScene* s : scenes) {
+    for (const SurfaceMesh& m : s->surfaces)
+      for (const Vec3& p : m.positions) take(p);
+    for (const Vec3& p : s->net.points) take(p);
+    for (const auto& c : s->network_curves)
+      for (const Vec3& p : c) take(p);
+  }
+  return out;
 }
 
 }  // namespace pl

@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <span>
+#include <vector>
 
 #include "app/editor/logic/camera_control.hpp"
 #include "render/draw_scene.hpp"
@@ -39,9 +40,9 @@ class ViewNavigator {
   void frame_tightly(std::span<const DrawScene* const> scenes, double aspect);
 
   // Gestures: begin at the press, move with every cursor position, end at the release. An
-  // orbit about a pivot away from the scene's centre (`scene`: its bounds, when known) keeps
-  // that centre in the middle part of the view (keep_in_view), so the model stays on screen.
-  void begin(Gesture gesture, const Vec2& pixel, const Vec3& pivot, const Box& scene = {});
+  // orbit keeps the model (`model`: a sample of its points, orbit_sample) on screen about any
+  // pivot (keep_in_view).
+  void begin(Gesture gesture, const Vec2& pixel, const Vec3& pivot, std::vector<Vec3> model = {});
   void move(const Vec2& pixel, const ViewRect& rect);
   // Ends the gesture. True when it was a click: the cursor never went further than the slop
   // from where it was pressed.
@@ -57,9 +58,14 @@ class ViewNavigator {
   bool framed_ = false;
   Gesture gesture_ = Gesture::None;
   Vec3 pivot_{0.0};
-  std::optional<Vec3> keep_;  // the scene's centre, kept in view while orbiting
+  std::vector<Vec3> model_;         // kept on screen while orbiting
+  std::optional<ScreenBox> start_;  // where it was on screen when the orbit began
   Vec2 press_{0.0}, last_{0.0};
   double travel_ = 0;  // furthest distance from the press
 };
+
+// At most `most` of the points the scenes draw (surface samples, net points, curve points),
+// evenly spread: what an orbit keeps on screen, cheap to project at every mouse move.
+std::vector<Vec3> orbit_sample(std::span<const DrawScene* const> scenes, std::size_t most = 4096);
 
 }  // namespace pl
