@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "app/document/scene_file.hpp"
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/io/scene_io.hpp"
 
 namespace pl {

@@ -1,6 +1,6 @@
 #include "app/document/scene_file.hpp"
 
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/io/gbp_io.hpp"
 #include "core/io/scene_io.hpp"
 

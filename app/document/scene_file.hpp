@@ -9,7 +9,7 @@
 #include <optional>
 #include <string>
 
-#include "core/patch/gb_patch.hpp"
+#include "core/patch/gb/gb_patch.hpp"
 #include "core/scene/scene.hpp"
 
 namespace pl {

@@ -14,7 +14,7 @@
 #include "app/editor/logic/file_listing.hpp"
 #include "app/editor/logic/patch_actions.hpp"
 #include "cli_test_util.hpp"
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/io/gbp_io.hpp"
 #include "core/io/scene_io.hpp"
 #include "core/patch/bezier_patch.hpp"

@@ -15,7 +15,7 @@
 #include "app/editor/theme.hpp"
 #include "core/eval/scene_surfaces.hpp"
 #include "core/io/scene_io.hpp"
-#include "core/patch/gb_patch.hpp"
+#include "core/patch/gb/gb_patch.hpp"
 #include "render/default_view.hpp"
 
 namespace pl {

@@ -1,6 +1,6 @@
 #include "app/editor/logic/cad_export_job.hpp"
 
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 
 namespace pl {
 

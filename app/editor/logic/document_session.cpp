@@ -2,7 +2,7 @@
 
 #include "app/cli/load_input.hpp"
 #include "app/document/scene_file.hpp"
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 
 namespace pl {
 
