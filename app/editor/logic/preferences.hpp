@@ -29,12 +29,19 @@ inline constexpr int kMinCombTeeth = 2, kMaxCombTeeth = 200;
 // The continuity warning threshold accepted from the panel or the file (degrees).
 inline constexpr double kMinContinuityThresholdDeg = 1e-6, kMaxContinuityThresholdDeg = 90.0;
 
-Preferences default_preferences();  // isophotes on, control net and curves shown
+// The isophote mode with the control net, curves and borders shown; no isophote lines over
+// the other modes (Shaded reads as shading, zebra stripes as reflections).
+Preferences default_preferences();
 std::string preferences_to_text(const Preferences& p);
 Preferences preferences_from_text(const std::string& text);
 
 // Missing or unreadable file: the defaults.
 Preferences load_preferences(const std::filesystem::path& file);
+// The Display panel's "Isophote lines" switch for the mode shown: what is drawn (always on in the
+// isophote mode, where the lines are the mode; over zebra stripes only when asked for there).
+bool isophote_switch(const DisplaySettings& d);
+void set_isophote_switch(DisplaySettings& d, bool on);
+
 // Atomic; returns false (and keeps the old file) on failure.
 bool save_preferences(const std::filesystem::path& file, const Preferences& p);
 
