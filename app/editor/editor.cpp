@@ -228,6 +228,7 @@ void Editor::frame() {
   follow_document();
   if (views_.ready() && !nav_.framed()) open_view();
   const EditorLayout l = layout();
+  nav_.follow_panel(l.display, views_.compare(), l.panels(views_.compare())[0].width);
   ViewportFrame f;
   f.window = window_.handle();
   f.renderer = &renderer_;

@@ -285,6 +285,53 @@ TEST(EditorView, EachComparisonPanelIsFramedTightly) {
   EXPECT_GT(reach, 0.85);
 }
 
+// Difference colouring adds the legend column beside the GB panel: both halves get narrower
+// while the window does not. The model framed across them stays inside, and comes back to the
+// same size when the column goes; a window resize keeps the vertical extent.
+TEST(EditorView, TheLegendColumnDoesNotCutAFramedModel) {
+  const Scene s = read_scene(kAssets / "default.json");
+  const LiveSurfaces gregory(s, 16, FaceScheme::Gregory, "g"), gb(s, 16, FaceScheme::GB, "b");
+  const DrawScene* scenes[2] = {&gregory.draw(), &gb.draw()};
+  const std::vector<Vec3> points = framing_points(scenes);
+  EditorLayout l{{1600, 1000}, 20, 26, 1.0};
+  const ViewRect wide = l.panels(true)[0];
+  ViewNavigator nav;
+  nav.frame_tightly(scenes, wide.aspect());
+  nav.follow_panel(l.display, true, wide.width);
+  const Camera framed = nav.camera();
+  auto widest = [&](const ViewRect& rect) {  // the model's widest reach from the panel centre
+    double reach = 0;
+    for (const Vec3& q : points) {
+      const auto w = project_to_window(nav.camera(), rect, q);
+      EXPECT_TRUE(w);
+      if (w) reach = std::max(reach, std::abs(w->x - rect.x - rect.width / 2) / (rect.width / 2));
+    }
+    return reach;
+  };
+  const double reach = widest(wide);
+  ASSERT_GT(reach, 0.85);  // the premise: the model spans the panel
+  l.legends = 1;
+  const ViewRect narrow = l.panels(true)[0];
+  ASSERT_LT(narrow.width, 0.95 * wide.width);
+  nav.follow_panel(l.display, true, narrow.width);
+  EXPECT_LT(widest(narrow), 1.0);
+  EXPECT_NEAR(widest(narrow), reach, 0.02);
+  l.legends = 0;
+  nav.follow_panel(l.display, true, wide.width);
+  EXPECT_NEAR(nav.camera().distance, framed.distance, 1e-9 * framed.distance);
+  // A smaller window or the comparison turning off: no zoom.
+  const double back = nav.camera().distance;
+  l.display = {1200, 1000};
+  nav.follow_panel(l.display, true, l.panels(true)[0].width);
+  nav.follow_panel(l.display, false, l.panels(false)[0].width);
+  EXPECT_EQ(nav.camera().distance, back);
+  // Framing again at the new width: the next call only records it.
+  nav.frame_tightly(scenes, narrow.aspect());
+  const double d = nav.camera().distance;
+  nav.follow_panel(l.display, false, narrow.width);
+  EXPECT_EQ(nav.camera().distance, d);
+}
+
 TEST(EditorView, OrbitAboutTheSelectionKeepsTheModelOnScreen) {
   const Scene s = read_scene(kAssets / "default.json");
   const LiveSurfaces live(s, 16, std::nullopt, "default");

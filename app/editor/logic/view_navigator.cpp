@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "render/default_view.hpp"
 
@@ -10,7 +11,7 @@ namespace pl {
 void ViewNavigator::frame(const Box& box, double aspect) {
   if (box.empty()) return;
   camera_.frame(box, aspect);
-  framed_ = true;
+  mark_framed();
 }
 
 void ViewNavigator::frame_closely(const Box& box, double aspect) {
@@ -22,13 +23,13 @@ void ViewNavigator::frame_closely(const Box& box, double aspect) {
   grown.add(box.centre() - Vec3(r));
   camera_.frame(grown, aspect);
   camera_.scene_radius = std::max(keep_radius, camera_.scene_radius);
-  framed_ = true;
+  mark_framed();
 }
 
 void ViewNavigator::preset(ViewPreset p, const Box& scene, double aspect) {
   if (scene.empty()) return;
   camera_ = preset_camera(p, scene, aspect, camera_.orthographic);
-  framed_ = true;
+  mark_framed();
 }
 
 void ViewNavigator::open_view(std::span<const DrawScene* const> scenes, double aspect) {
@@ -38,14 +39,21 @@ void ViewNavigator::open_view(std::span<const DrawScene* const> scenes, double a
   else
     camera_ = default_camera(scenes, aspect);
   camera_.orthographic = ortho;
-  framed_ = true;
+  mark_framed();
 }
 
 void ViewNavigator::frame_tightly(std::span<const DrawScene* const> scenes, double aspect) {
   const std::vector<Vec3> points = framing_points(scenes);
   if (points.empty()) return;
   camera_.frame_points(points, aspect);
-  framed_ = true;
+  mark_framed();
+}
+
+void ViewNavigator::follow_panel(const Vec2& window, bool compare, double width) {
+  const PanelShape was = std::exchange(panel_, PanelShape{window, compare, width});
+  if (was.window == window && was.compare == compare && was.width > 0 && width > 0 &&
+      was.width != width)
+    camera_.zoom(width / was.width);
 }
 
 void ViewNavigator::begin(Gesture g, const Vec2& pixel, const Vec3& pivot,

@@ -39,6 +39,13 @@ class ViewNavigator {
   // Frames what the scenes draw tightly (Camera::frame_points) from the current direction.
   void frame_tightly(std::span<const DrawScene* const> scenes, double aspect);
 
+  // Called every frame with the window size, whether the comparison is shown and the width of
+  // the first panel. When the panel width changed while the window and the split did not (the
+  // legend column came or went), zooms so the panel keeps showing the same width of the world:
+  // a model framed across it is not cut by the new column, and comes back to its size when the
+  // column goes. A window resize keeps the vertical extent, as every view does.
+  void follow_panel(const Vec2& window, bool compare, double width);
+
   // Gestures: begin at the press, move with every cursor position, end at the release. An
   // orbit keeps the model (`model`: a sample of its points, orbit_sample) on screen about any
   // pivot (keep_in_view).
@@ -54,8 +61,19 @@ class ViewNavigator {
   static constexpr double kWheelZoom = 1.15;  // per notch
 
  private:
+  // Framed at the panel as it is now: the next follow_panel only records its width.
+  void mark_framed() {
+    framed_ = true;
+    panel_.width = 0;
+  }
+
   Camera camera_;
   bool framed_ = false;
+  struct PanelShape {
+    Vec2 window{0.0};
+    bool compare = false;
+    double width = 0;
+  } panel_;
   Gesture gesture_ = Gesture::None;
   Vec3 pivot_{0.0};
   std::vector<Vec3> model_;         // kept on screen while orbiting
