@@ -38,15 +38,17 @@ void draw_point_overlays(const OverlayFrame& o) {
   const float s = o.ui_scale;
   const DisplaySettings& d = o.prefs.display;
 
-  // The worst edge of this panel's filling, when it is over the user's warning threshold.
+  // The worst edge of this panel's filling, when it is over the user's warning threshold: a
+  // warning, so drawn with the curves hidden too, outlined dark to stand out on light surfaces.
   const auto& curves = o.live.draw().network_curves;
   const int worst =
       o.continuity ? o.continuity->warned_edge(o.panel, o.prefs.continuity_threshold_deg) : -1;
-  if (worst >= 0 && worst < int(curves.size()) && d.network_curves) {
+  if (worst >= 0 && worst < int(curves.size())) {
     std::vector<ImVec2> line;
     for (const Vec3& p : curves[worst])
       if (const auto q = screen(p)) line.push_back(im(*q));
     const Rgb h = palette::kHighlight;
+    dl->AddPolyline(line.data(), int(line.size()), rgba(0.1f, 0.1f, 0.1f, 0.85f), 0, 6.5f * s);
     dl->AddPolyline(line.data(), int(line.size()), rgba(h[0], h[1], h[2]), 0, 4.0f * s);
   }
 
