@@ -4,6 +4,7 @@
 
 #include <cstring>
 #include <system_error>
+#include <utility>
 
 namespace pl {
 
@@ -86,7 +87,9 @@ std::optional<fs::path> FileBrowser::draw() {
   const float button = ImGui::GetFontSize() * 8;
   ImGui::SetNextItemWidth(-ImGui::CalcTextSize(filter.c_str()).x -
                           ImGui::GetStyle().ItemSpacing.x * 2);
-  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();  // type a name straight away
+  // Type a name straight away, and again after a refused name or a folder typed into the field
+  // (Enter left the field).
+  if (ImGui::IsWindowAppearing() || std::exchange(refocus_, false)) ImGui::SetKeyboardFocusHere();
   const bool typed_enter = ImGui::InputTextWithHint("##name", "file name", name_, sizeof name_,
                                                     ImGuiInputTextFlags_EnterReturnsTrue);
   ImGui::SameLine();
@@ -98,8 +101,11 @@ std::optional<fs::path> FileBrowser::draw() {
       dir_ = p;
       name_[0] = '\0';
       refresh();
+      refocus_ = true;
     } else if (problem_ = extension_problem(p, extensions_); problem_.empty()) {
       chosen = p;
+    } else {
+      refocus_ = true;
     }
   }
   ImGui::SameLine();
