@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <sstream>
 #include <thread>
 
 #include "app/document/network_commands.hpp"
@@ -99,6 +100,47 @@ TEST(EditorFiles, AGbpIsSavedBackAsAGbp) {
   // Save As suggests its own folder and name.
   EXPECT_EQ(session.save_as_suggestion().dir, (tmp / "dome.gbp").parent_path());
   EXPECT_EQ(session.save_as_suggestion().name, "dome.gbp");
+}
+
+// Ctrl+S on a .gbp read from elsewhere (transfinite's cagd86) after moving one point: the file
+// differs from the original on that point's line only (numbers keep their shortest spelling),
+// and every other point reads back as the same double.
+TEST(EditorFiles, SavingAGbpBackChangesOnlyTheEditedPointsLine) {
+  TempDir tmp;
+  const fs::path original = fs::path(PATCHLAB_TEST_DATA_DIR) / "gb" / "cagd86.gbp";
+  ASSERT_TRUE(fs::exists(original)) << original;
+  fs::copy_file(original, tmp / "cagd86.gbp");
+  DocumentSession session({kAssets});
+  session.open(tmp / "cagd86.gbp");
+  const auto& before = dynamic_cast<const GBPatch&>(*session.doc().scene().patches[0].patch);
+  const std::vector<Vec3> points = before.control_points();
+  const int moved = 7;
+  session.doc().execute(
+      std::make_unique<MovePointsCommand>(std::vector<PointRef>{PointRef::patch_point(0, moved)},
+                                          std::vector<Vec3>{points[moved] + Vec3(1.5, -2.25, 0)}));
+  ASSERT_TRUE(session.save());
+  auto lines = [](const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) out.push_back(line);
+    return out;
+  };
+  const std::vector<std::string> was = lines(test::slurp(original)),
+                                 now = lines(test::slurp(tmp / "cagd86.gbp"));
+  ASSERT_EQ(was.size(), now.size());
+  for (std::size_t i = 0; i < was.size(); ++i) {
+    if (i == std::size_t(moved) + 1) {  // after the "n d" line
+      EXPECT_NE(was[i], now[i]);
+    } else {
+      EXPECT_EQ(was[i], now[i]) << "line " << i + 1;
+    }
+  }
+  const GBPatch back = read_gbp(tmp / "cagd86.gbp");
+  for (std::size_t k = 0; k < points.size(); ++k)
+    if (int(k) != moved) {
+      EXPECT_EQ(back.control_points()[k], points[k]) << k;
+    }
+  EXPECT_EQ(back.control_points()[moved], points[moved] + Vec3(1.5, -2.25, 0));
 }
 
 TEST(EditorFiles, AGbpThatNoLongerFitsAsksForASceneFileInItsFolder) {
