@@ -1,7 +1,8 @@
 // The 2D overlays over a view panel, drawn with ImGui's background list (crisp at any scale, no
 // GL programs): selected and hovered points with their tooltips, the worst continuity edge, the
-// probe's mark, the comparison's panel labels and the axis triad (the colour legends have a
-// column of their own: editor_windows).
+// probe's mark, the comparison's panel labels, the axis triad, the tools' feedback and the
+// tangent-plane discs of selected vertices (the colour legends have a column of their own:
+// editor_windows).
 #pragma once
 
 #include <optional>
@@ -9,9 +10,11 @@
 
 #include "app/editor/logic/continuity_monitor.hpp"
 #include "app/editor/logic/live_surfaces.hpp"
+#include "app/editor/logic/plane_handles.hpp"
 #include "app/editor/logic/preferences.hpp"
 #include "app/editor/logic/scene_picker.hpp"
 #include "app/editor/logic/surface_probe.hpp"
+#include "app/editor/logic/tool.hpp"
 
 namespace pl {
 
@@ -33,5 +36,10 @@ void draw_point_overlays(const OverlayFrame& o);
 void draw_panel_label(const OverlayFrame& o, int panel, bool difference, const ViewRect& whole);
 void draw_axis_triad(const OverlayFrame& o);
 void draw_error_text(const ViewRect& rect, const std::string& text);
+// The active tool's feedback (picked points and lines, the dashed rubber band, the mark where a
+// click acts) and the tangent planes of selected vertices (a disc in the plane, the normal with
+// its knob; `hot` is the knob under the cursor, -1 if none).
+void draw_tool_overlays(const ViewRect& rect, const Camera& camera, const ToolPreview& preview,
+                        const std::vector<PlaneHandle>& planes, int hot, float ui_scale);
 
 }  // namespace pl
