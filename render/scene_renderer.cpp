@@ -91,7 +91,7 @@ void SceneRenderer::draw(const GpuScene& scene, const Camera& camera,
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, color_map_.id());
   glUniform1i(surface_.uniform("u_color_map"), 0);
-  for (const GpuSurface& s : scene.surfaces()) s.draw();
+  scene.surfaces().draw();
 
   glEnable(GL_BLEND);
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
@@ -104,7 +104,11 @@ void SceneRenderer::draw(const GpuScene& scene, const Camera& camera,
   const bool network = settings.network_curves || (lone_combs && has_network);
   // Curves behind a surface show faintly, as every overlay does: a closed shape's back is read,
   // not confused with its front.
-  if (borders) draw_lines(scene.borders(), vp, v, palette::kBorder, 0.85f, 1.4f * s, true);
+  // A network face's border is its edge's curve: with the network curves shown it is not drawn
+  // again under them.
+  if (borders)
+    draw_lines(scene.borders(), vp, v, palette::kBorder, 0.85f, 1.4f * s, true, 0.0f, 0.0f,
+               network ? scene.own_border_vertices() : -1);
   if (network)
     draw_lines(scene.network_curves(), vp, v, palette::kNetworkCurve, 1.0f, 2.6f * s, true);
   if (settings.combs) {
@@ -200,7 +204,7 @@ void SceneRenderer::draw_tint(const GpuScene& scene, std::span<const int> surfac
   glUniformMatrix4fv(tint_.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
   glUniform4f(tint_.uniform("u_color"), color[0], color[1], color[2], color[3]);
   for (int i : surfaces)
-    if (i >= 0 && i < int(scene.surfaces().size())) scene.surfaces()[i].draw();
+    if (i >= 0) scene.surfaces().draw_surface(std::size_t(i));
   glDisable(GL_POLYGON_OFFSET_FILL);
   glDisable(GL_BLEND);
   glDepthMask(GL_TRUE);
