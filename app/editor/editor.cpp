@@ -126,6 +126,7 @@ void Editor::follow_document() {
     views_.fit_to_screen(
         [&](const Vec3& c, double r) { return 2 * r / world_per_pixel(nav_.camera(), rect, c); },
         doc);
+    views_.show_net(net_focus(), kPointSize * ui_scale_, doc);
   } catch (const DataError& e) {
     status_.say(e.what());
   }
@@ -137,6 +138,31 @@ void Editor::follow_document() {
   // more than the drag itself.
   if (views_.settled())
     continuity_.follow(doc.scene(), views_.main()->fine().surfaces(), doc.revision());
+}
+
+NetFocus Editor::net_focus() const {
+  using Kind = SelectionItem::Kind;
+  std::vector<PointRef> points = selection_.points();
+  std::vector<int> edges = selection_.of_kind(Kind::Edge), faces = selection_.of_kind(Kind::Face),
+                   patches = selection_.of_kind(Kind::Patch);
+  const Document& doc = session_.doc();
+  if (doc.dragging())
+    points.insert(points.end(), doc.drag_points().begin(), doc.drag_points().end());
+  // Under the cursor: the point or edge, and the surface the ray meets (not the item a click
+  // would select, which a derived point shown for that surface would take away again).
+  if (const auto& item = mouse_.under.item) {
+    if (item->kind == Kind::Point) points.push_back(item->point);
+    if (item->kind == Kind::Edge) edges.push_back(item->index);
+  }
+  if (mouse_.under.surface && views_.ready() && mouse_.panel >= 0) {
+    const auto& surfaces = views_.panel(mouse_.panel).shown().surfaces().surfaces;
+    const int s = mouse_.under.surface->surface;
+    if (s >= 0 && s < int(surfaces.size())) {
+      if (surfaces[s].face >= 0) faces.push_back(surfaces[s].face);
+      if (surfaces[s].patch >= 0) patches.push_back(surfaces[s].patch);
+    }
+  }
+  return pl::net_focus(points, edges, faces, patches);
 }
 
 void Editor::update_title() {

@@ -81,6 +81,8 @@ class Editor {
   // editor.cpp
   void frame();
   void follow_document();
+  // The objects whose control points are shown whatever their size on screen.
+  NetFocus net_focus() const;
   void after_document_replaced();
   void rebuild_views(bool compare);
   void update_title();

@@ -1,6 +1,7 @@
 #include "app/editor/evaluated_view.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "app/cli/draw_scene_builder.hpp"
@@ -70,8 +71,9 @@ EvaluatedView::EvaluatedView(const Document& doc, std::optional<FaceScheme> sche
   const int coarse_start = start_density(coarse_, coarse_budget_);
   if (coarse_start != coarse_density)
     coarse_.set_densities(std::vector<int>(coarse_.surfaces().surfaces.size(), coarse_start));
-  gpu_fine_.update(fine_.draw());
-  gpu_coarse_.update(coarse_.draw());
+  gpu_fine_.update_meshes_and_curves(fine_.draw());
+  gpu_coarse_.update_meshes_and_curves(coarse_.draw());
+  upload_net(fine_, gpu_fine_, fine_net_key_);
   follow_curves(doc, fine_, doc.revision(), {}, gpu_fine_, fine_curves_serial_);
 }
 
@@ -121,7 +123,7 @@ bool EvaluatedView::follow(const Document& doc) {
     const uint64_t from = coarse_.synced_revision();
     const std::vector<int> changed = coarse_.sync(doc.scene(), doc.revision());
     last_eval_ms_ = coarse_.last_sync_ms();
-    gpu_coarse_.update_geometry(coarse_.draw());
+    gpu_coarse_.update_meshes_and_curves(coarse_.draw());
     follow_curves(doc, coarse_, from, changed, gpu_coarse_, coarse_curves_serial_);
     return true;
   }
@@ -134,7 +136,7 @@ bool EvaluatedView::follow(const Document& doc) {
   const uint64_t from = fine_.synced_revision();
   const std::vector<int> changed = fine_.sync(doc.scene(), doc.revision());
   last_eval_ms_ = fine_.last_sync_ms();
-  gpu_fine_.update_geometry(fine_.draw());
+  gpu_fine_.update_meshes_and_curves(fine_.draw());
   follow_curves(doc, fine_, from, changed, gpu_fine_, fine_curves_serial_);
   return true;
 }
@@ -150,6 +152,7 @@ bool EvaluatedView::fit_to_screen(
       coarse_current &&
       !coarse_.set_densities(choose_densities(sizes_of(coarse_, &pixels), coarse_budget_)).empty();
   // Curves: network edges by their own size on screen, borders by their surface's.
+  std::vector<double> edge_pixels;
   if (doc.scene().network) {
     std::vector<int> segments;
     const Network& net = *doc.scene().network;
@@ -160,7 +163,8 @@ bool EvaluatedView::fit_to_screen(
       const Vec3 centre = (cp[0] + cp[1] + cp[2] + cp[3]) / 4.0;
       double radius = 0;
       for (const Vec3& p : cp) radius = std::max(radius, glm::length(p - centre));
-      segments.push_back(curve_segments(pixels(centre, radius)));
+      edge_pixels.push_back(pixels(centre, radius));
+      segments.push_back(curve_segments(edge_pixels.back()));
     }
     if (fine_.set_curve_segments(segments)) drawn_changed = true;
     if (coarse_current) coarse_changed |= coarse_.set_curve_segments(segments);
@@ -176,9 +180,58 @@ bool EvaluatedView::fit_to_screen(
     drawn_changed |=
         follow_curves(doc, fine_, fine_.synced_revision(), {}, gpu_fine_, fine_curves_serial_);
   }
-  if (drawn_changed) gpu_fine_.update_geometry(fine_.draw());
-  if (coarse_changed) gpu_coarse_.update_geometry(coarse_.draw());
+  if (drawn_changed) gpu_fine_.update_meshes_and_curves(fine_.draw());
+  if (coarse_changed) gpu_coarse_.update_meshes_and_curves(coarse_.draw());
+  // The sizes the control net is thinned for: each edge's and each surface's on screen.
+  NetScreenSizes sizes;
+  sizes.edge_pixels = std::move(edge_pixels);
+  for (const SceneSurface& s : fine_.surfaces().surfaces) {
+    const Sphere sphere = bounding_sphere(s.evaluator->patch());
+    sizes.surface_pixels.push_back(pixels(sphere.centre, sphere.radius));
+  }
+  // A small zoom keeps the thinning when no object crosses its threshold ... so compare the
+  // decisions, not the sizes: thinning is recomputed when any size moved by 10 %.
+  auto moved = [](const std::vector<double>& a, const std::vector<double>& b) {
+    if (a.size() != b.size()) return true;
+    for (std::size_t i = 0; i < a.size(); ++i)
+      if (std::abs(a[i] - b[i]) > 0.1 * std::max(a[i], b[i])) return true;
+    return false;
+  };
+  if (moved(sizes.edge_pixels, net_sizes_.edge_pixels) ||
+      moved(sizes.surface_pixels, net_sizes_.surface_pixels)) {
+    net_sizes_ = std::move(sizes);
+    ++net_sizes_serial_;
+  }
   return drawn_changed;
+}
+
+void EvaluatedView::show_net(const NetFocus& focus, double point_px, const Document& doc) {
+  LiveSurfaces& live = coarse_shown_ ? coarse_ : fine_;
+  const NetKey key{&live, live.points_layout(), net_sizes_serial_, focus, point_px};
+  if (!(key == net_key_)) {
+    net_key_ = key;
+    thinning_ = thin_control_net(live.points(), live.surfaces(),
+                                 doc.scene().network ? &*doc.scene().network : nullptr, net_sizes_,
+                                 focus, point_px);
+    live.set_hidden_points(thinning_.hidden);
+    ++net_serial_;
+  }
+  upload_net(live, coarse_shown_ ? gpu_coarse_ : gpu_fine_,
+             coarse_shown_ ? coarse_net_key_ : fine_net_key_);
+}
+
+void EvaluatedView::upload_net(const LiveSurfaces& live, GpuScene& gpu, uint64_t& key) {
+  // The points move with every sync (revision) and the hidden ones with every thinning.
+  const uint64_t k = live.synced_revision() * 0x9E3779B97F4A7C15ull ^ net_serial_ << 1 ^
+                     live.points_layout() << 40;
+  if (k == key) return;
+  key = k;
+  const ScenePoints& pts = live.points();
+  make_control_net(pts, true, net_scratch_);
+  arrows_scratch_.clear();
+  for (std::size_t a = 0; a < pts.arrows.size(); ++a)
+    if (pts.shown(pts.arrow_base[a])) arrows_scratch_.push_back(pts.arrows[a]);
+  gpu.set_net(net_scratch_, arrows_scratch_);
 }
 
 std::string EvaluatedView::density_note() const {

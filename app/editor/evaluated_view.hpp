@@ -20,6 +20,7 @@
 #include "app/document/document.hpp"
 #include "app/editor/logic/live_curves.hpp"
 #include "app/editor/logic/live_surfaces.hpp"
+#include "app/editor/logic/net_thinning.hpp"
 #include "core/eval/density_choice.hpp"
 #include "render/display_settings.hpp"
 #include "render/gpu_scene.hpp"
@@ -51,6 +52,14 @@ class EvaluatedView {
   // "face densities 6-24, 412 k of 600 k triangles": for the status bar.
   std::string density_note() const;
 
+  // Which control points are drawn and picked: those readable at their size on screen (from
+  // the last fit_to_screen; net_thinning.hpp) and, whatever their size, those of `focus`.
+  // point_px: a drawn point's width in pixels. Uploads the net when it or the points changed;
+  // cheap otherwise.
+  void show_net(const NetFocus& focus, double point_px, const Document& doc);
+  // What show_net hides, for the status bar; empty when nothing is.
+  std::string net_note() const { return thinning_.note(); }
+
   // Curvature combs on or off and their tooth count: applied by the next follow(), which
   // resamples the curves of the surfaces shown without re-evaluating them (no comb work while
   // combs are off).
@@ -74,6 +83,8 @@ class EvaluatedView {
   // The border polylines uploaded: LiveCurves' own, or every k-th point of one (a border a few
   // pixels long on screen needs a few segments, not 64).
   std::vector<const CurvatureComb*> drawn_borders();
+  // Uploads the shown points of `live` to `gpu` unless `key` says it holds them already.
+  void upload_net(const LiveSurfaces& live, GpuScene& gpu, uint64_t& key);
 
   std::optional<FaceScheme> scheme_;
   DensityBudget fine_budget_, coarse_budget_;
@@ -86,6 +97,20 @@ class EvaluatedView {
   uint64_t fine_curves_serial_ = UINT64_MAX, coarse_curves_serial_ = UINT64_MAX;
   bool coarse_shown_ = false;
   double last_eval_ms_ = 0;
+  // Control-net thinning: the sizes it used, what it was computed for, and the uploads.
+  NetScreenSizes net_sizes_;
+  uint64_t net_sizes_serial_ = 0, net_serial_ = 0;
+  struct NetKey {
+    const LiveSurfaces* live = nullptr;
+    uint64_t layout = UINT64_MAX, sizes = UINT64_MAX;
+    NetFocus focus;
+    double point_px = 0;
+    bool operator==(const NetKey&) const = default;
+  } net_key_;
+  NetThinning thinning_;
+  uint64_t fine_net_key_ = UINT64_MAX, coarse_net_key_ = UINT64_MAX;
+  ControlNet net_scratch_;
+  std::vector<Arrow> arrows_scratch_;
 };
 
 }  // namespace pl

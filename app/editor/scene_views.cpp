@@ -58,6 +58,12 @@ bool SceneViews::fit_to_screen(const std::function<double(const Vec3&, double)>&
   return changed;
 }
 
+void SceneViews::show_net(const NetFocus& focus, double point_px, const Document& doc) {
+  if (main_) main_->show_net(focus, point_px, doc);
+  if (compare_)
+    for (auto& v : compare_views_) v->show_net(focus, point_px, doc);
+}
+
 const EvaluatedView& SceneViews::panel(int i) const {
   if (compare_ && i >= 0 && i < 2) return *compare_views_[i];
   return *main_;

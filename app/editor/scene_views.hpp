@@ -28,6 +28,10 @@ class SceneViews {
   bool fit_to_screen(const std::function<double(const Vec3& centre, double radius)>& pixels,
                      const Document& doc);
 
+  // Every view's control net thinned for its size on screen, `focus` always shown
+  // (EvaluatedView::show_net).
+  void show_net(const NetFocus& focus, double point_px, const Document& doc);
+
   bool ready() const { return main_ != nullptr; }
   const std::string& error() const { return error_; }
   bool compare() const { return compare_; }
