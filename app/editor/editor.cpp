@@ -12,6 +12,7 @@
 #include "app/editor/action_menus.hpp"
 #include "app/editor/editor_windows.hpp"
 #include "app/editor/logic/editor_paths.hpp"
+#include "app/editor/logic/launch_time.hpp"
 #include "app/editor/logic/select_tool.hpp"
 #include "app/editor/side_panel.hpp"
 #include "core/io/data_error.hpp"
@@ -23,6 +24,8 @@ namespace {
 // How long the loop sleeps waiting for input when nothing animates (a tool should not spin a
 // core while idle); short enough that a release's fine surfaces appear at once anyway.
 constexpr double kIdleWaitSeconds = 0.25;
+// While a scene is evaluated behind the progress bar: repaint often enough to look alive.
+constexpr double kLoadingFrameSeconds = 0.05;
 
 }  // namespace
 
@@ -42,7 +45,9 @@ Editor::Editor(GlWindow& window, EditorOptions options, DocumentSession session)
                                      [this] { return session_.doc().dirty(); },
                                      [this] { return browse_start_dir(); }}) {
   if (const auto dir = config_dir()) prefs_file_ = *dir / "preferences.ini";
-  prefs_ = prefs_file_ ? load_preferences(*prefs_file_) : default_preferences();
+  // The benchmark measures the default settings, whatever the user chose.
+  prefs_ =
+      prefs_file_ && !options_.bench_drag ? load_preferences(*prefs_file_) : default_preferences();
   ui_scale_ = prefs_.ui_scale > 0 ? static_cast<float>(prefs_.ui_scale) : window_.content_scale();
   window_.apply_ui_scale(ui_scale_);
   tools_.add(std::make_unique<SelectTool>());
@@ -118,6 +123,12 @@ void Editor::set_compare(bool on) {
 
 void Editor::follow_document() {
   if (session_.serial() != session_serial_) after_document_replaced();
+  if (views_.poll()) {
+    // The worker's evaluation is uploaded: the first frame of the scene follows.
+    if (!loaded_ms_) loaded_ms_ = ms_since_launch();
+    nav_.unframe();
+    for (ScenePicker& p : pickers_) p.reset();
+  }
   const Document& doc = session_.doc();
   try {
     if (views_.follow(doc, prefs_.display)) status_.eval_ms = views_.last_eval_ms();
@@ -183,7 +194,10 @@ int Editor::run() {
     // ImGui needs to lay its windows out, or a gesture).
     const bool busy = frames_ < 4 || release_time_ || session_.doc().dragging() ||
                       mouse_.tool_has_it || nav_.gesture() != ViewNavigator::Gesture::None;
-    if (busy)
+    if (views_.loading())
+      glfwWaitEventsTimeout(
+          kLoadingFrameSeconds);  // repaint the progress, leave the worker the cores
+    else if (busy)
       glfwPollEvents();
     else
       glfwWaitEventsTimeout(kIdleWaitSeconds);
@@ -270,11 +284,13 @@ void Editor::frame() {
   f.hover = &mouse_.under;
   f.probe = &mouse_.probe;
   f.ui_scale = ui_scale_;
+  f.title = session_.title();
   const ColorRange range = views_.colour_range(prefs_.display, session_.doc().revision());
   painter_.paint(f, range);
   draw_interface(range);
   update_title();
   window_.end_frame();
+  if (!first_frame_ms_) first_frame_ms_ = ms_since_launch();
   key_presses_.clear();
   if (debugging()) report_selection_change();
   const auto now = Clock::now();
@@ -286,9 +302,12 @@ void Editor::frame() {
   // The work of a frame, not the idle wait for input before it.
   status_.add_frame(std::chrono::duration<double, std::milli>(now - start).count());
   ++frames_;
+  ready_frames_ = views_.ready() ? ready_frames_ + 1 : 0;
   // Report only once the layout is final (ImGui hides new windows on their first frame).
-  if (frames_ >= 3) report_debug_items();
-  if (frames_ == 3 && options_.screenshot) {
+  if (ready_frames_ >= 3) report_debug_items();
+  // A scene that cannot be shown is shot with its message.
+  const bool failed = !views_.ready() && !views_.loading() && frames_ >= 3;
+  if (options_.screenshot && (ready_frames_ == 3 || failed)) {
     take_screenshot(*options_.screenshot);
     quit_ = true;
   }
