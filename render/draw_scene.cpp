@@ -1,5 +1,7 @@
 #include "render/draw_scene.hpp"
 
+#include <cmath>
+
 namespace pl {
 
 uint32_t point_style_bits(const ControlNet& net) {
@@ -14,6 +16,18 @@ uint32_t arrow_kind_bits(const std::vector<Arrow>& arrows) {
   uint32_t bits = 0;
   for (const Arrow& a : arrows) bits |= 1u << static_cast<int>(a.kind);
   return bits;
+}
+
+int enclosed_volume_sign(const std::vector<SurfaceMesh>& meshes) {
+  double volume = 0, scale = 0;
+  for (const SurfaceMesh& m : meshes)
+    for (const auto& t : m.triangles) {
+      const Vec3 &a = m.positions[t[0]], &b = m.positions[t[1]], &c = m.positions[t[2]];
+      volume += glm::dot(a, glm::cross(b, c));  // six times the signed tetrahedron volume
+      scale += glm::length(a) * glm::length(b) * glm::length(c);
+    }
+  if (!(std::abs(volume) > 1e-9 * scale)) return 0;
+  return volume > 0 ? 1 : -1;
 }
 
 Box DrawScene::bounds() const {

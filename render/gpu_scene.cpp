@@ -181,6 +181,10 @@ void GpuScene::update_geometry(const DrawScene& scene) {
 
 void GpuScene::update_meshes_and_curves(const DrawScene& scene) {
   surfaces_.update(scene.surfaces);
+  closed_orientation_ = scene.closed_orientation;
+  surface_bounds_ = Box();
+  for (const SurfaceMesh& m : scene.surfaces)
+    for (const Vec3& p : m.positions) surface_bounds_.add(p);
   set_highlights(scene.highlights);
   curves_.set(polylines(scene.network_curves), {});
   const Box box = scene.bounds();

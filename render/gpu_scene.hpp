@@ -85,6 +85,9 @@ class GpuScene {
   void update_surface(std::size_t i, const SurfaceMesh& mesh) { surfaces_.update_surface(i, mesh); }
 
   const GpuSurfaceBatch& surfaces() const { return surfaces_; }
+  // DrawScene::closed_orientation and the box of the surfaces, as last uploaded.
+  int closed_orientation() const { return closed_orientation_; }
+  const Box& surface_bounds() const { return surface_bounds_; }
   // Net lines between editable points, and those touching a derived point.
   const GpuPrimitives& net_lines() const { return net_lines_; }
   const GpuPrimitives& derived_net_lines() const { return derived_net_lines_; }
@@ -117,6 +120,8 @@ class GpuScene {
                  std::span<const CurvatureComb* const> borders,
                  const std::vector<bool>& border_on_network);
   GpuSurfaceBatch surfaces_;
+  int closed_orientation_ = 0;
+  Box surface_bounds_;
   GLsizei own_border_vertices_ = -1;
   GpuPrimitives net_lines_, derived_net_lines_, net_points_, arrows_, curves_, borders_,
       highlights_;

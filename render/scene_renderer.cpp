@@ -1,6 +1,7 @@
 #include "render/scene_renderer.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
+#include <limits>
 
 namespace pl {
 
@@ -29,6 +30,22 @@ void set(GLint loc, const Rgb& c) {
 template <std::size_t N>
 void set(GLint loc, const std::array<Rgb, N>& colors) {
   glUniform3fv(loc, static_cast<GLsizei>(N), colors[0].data());
+}
+
+// True when the eye is outside `box` and the near clipping plane cuts nothing of it.
+bool sees_outside_only(const Camera& camera, const Box& box) {
+  if (box.empty()) return false;
+  const Vec3 eye = camera.eye(), f = camera.forward();
+  const bool inside = eye.x >= box.lo.x && eye.x <= box.hi.x && eye.y >= box.lo.y &&
+                      eye.y <= box.hi.y && eye.z >= box.lo.z && eye.z <= box.hi.z;
+  if (inside) return false;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (int c = 0; c < 8; ++c) {
+    const Vec3 corner(c & 1 ? box.hi.x : box.lo.x, c & 2 ? box.hi.y : box.lo.y,
+                      c & 4 ? box.hi.z : box.lo.z);
+    nearest = std::min(nearest, glm::dot(corner - eye, f));
+  }
+  return nearest > camera.clip_planes()[0];
 }
 
 }  // namespace
@@ -91,7 +108,15 @@ void SceneRenderer::draw(const GpuScene& scene, const Camera& camera,
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, color_map_.id());
   glUniform1i(surface_.uniform("u_color_map"), 0);
+  // A solid seen from outside, with nothing of it cut by the near plane: its inner side is
+  // hidden, so it is not drawn (on a CPU rasteriser that halves the surfaces' cost).
+  const int closed = scene.closed_orientation();
+  if (closed != 0 && sees_outside_only(camera, scene.surface_bounds())) {
+    glEnable(GL_CULL_FACE);
+    glCullFace(closed > 0 ? GL_BACK : GL_FRONT);
+  }
   scene.surfaces().draw();
+  glDisable(GL_CULL_FACE);
 
   glEnable(GL_BLEND);
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);

@@ -80,6 +80,15 @@ std::vector<CurvatureComb> surface_borders(const SceneSurface& surface, int comb
   return borders;
 }
 
+int closed_orientation(const Scene& scene, const SceneSurfaces& surfaces,
+                       const std::vector<SurfaceMesh>& meshes) {
+  if (!scene.network || !scene.patches.empty() || scene.network->faces.empty()) return 0;
+  if (surfaces.shared_edges.size() != scene.network->edges.size()) return 0;
+  for (const SceneSurface& s : surfaces.surfaces)
+    if (s.face < 0) return 0;
+  return enclosed_volume_sign(meshes);
+}
+
 DrawScene build_draw_scene(const Scene& scene, const SceneSurfaces& surfaces, int comb_teeth) {
   DrawScene d;
   for (const SceneSurface& s : surfaces.surfaces) {
@@ -118,6 +127,7 @@ DrawScene build_draw_scene(const Scene& scene, const SceneSurfaces& surfaces, in
   for (const ScenePatch& p : scene.patches) append_patch_net(d, *p.patch, PointRole::Editable);
   for (const SceneSurface& s : surfaces.surfaces)
     if (s.face >= 0) append_patch_net(d, s.evaluator->patch(), PointRole::Derived, &network_points);
+  d.closed_orientation = closed_orientation(scene, surfaces, d.surfaces);
   return d;
 }
 

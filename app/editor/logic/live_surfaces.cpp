@@ -35,6 +35,7 @@ int LiveSurfaces::segments_of(std::size_t edge) const {
 }
 
 void LiveSurfaces::rebuild_overlays(const Scene& scene) {
+  draw_.closed_orientation = closed_orientation(scene, evaluation_.surfaces(), draw_.surfaces);
   points_ = collect_scene_points(scene, evaluation_.surfaces());
   ++points_layout_;
   fill_overlays(scene, points_, draw_);
