@@ -1,6 +1,6 @@
 // Owns the samples of one patch: a (shared) tessellation, every sample's surface jet and its
 // differential geometry. Moving a control point is an axpy with that point's influence column
-// (architecture note 3): only samples where phi_k is non-zero change, and only their normals
+// (docs/developing.md): only samples where phi_k is non-zero change, and only their normals
 // and curvatures are recomputed.
 #pragma once
 

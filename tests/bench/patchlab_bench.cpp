@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
               options.quick ? " (quick mode: figures are not meaningful)" : "");
   pl::bench::bench_bezier(options);
   pl::bench::bench_gb(options);
+  pl::bench::bench_gb_face(options);
   pl::bench::bench_engine(options);
   pl::bench::bench_catmull_clark(options);
   pl::bench::bench_cad(options);
