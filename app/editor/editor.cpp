@@ -217,6 +217,7 @@ void Editor::draw_interface(const ColorRange& range) {
   figures.coarse = views_.ready() && !views_.settled();
   figures.selected = selection_.size();
   figures.tool = tools_.active().name();
+  if (views_.ready()) figures.drawing = views_.main()->drawing_note();
   if (mouse_.under.item) figures.under = describe(*mouse_.under.item);
   if (work_plane_.shown && mouse_.panel >= 0) {
     const ImGuiIO& io = ImGui::GetIO();

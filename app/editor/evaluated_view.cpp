@@ -15,13 +15,16 @@ std::string source_of(const Document& doc) {
 }
 
 // Sizes of the surfaces as they are evaluated; pixels from `pixels` when given.
+// `fitted`: whether the densities were chosen from sizes on screen already (SurfaceSize).
 std::vector<SurfaceSize> sizes_of(
-    const LiveSurfaces& live, const std::function<double(const Vec3&, double)>* pixels = nullptr) {
+    const LiveSurfaces& live, const std::function<double(const Vec3&, double)>* pixels = nullptr,
+    bool fitted = true) {
   std::vector<SurfaceSize> sizes;
   for (const SceneSurface& s : live.surfaces().surfaces) {
     SurfaceSize z;
     z.triangles = s.evaluator->tessellation().triangles.size();
     z.density = s.evaluator->tessellation().density;
+    z.fitted = fitted;
     if (pixels) {
       const Sphere sphere = bounding_sphere(s.evaluator->patch());
       z.pixels = (*pixels)(sphere.centre, sphere.radius);
@@ -46,6 +49,22 @@ int curve_segments(double pixels) {
   return s;
 }
 
+// Segments of a network edge (cubic Bezier control points cp, `scale` pixels per model unit at
+// the edge): the fewest (a power of two, 1 to kCurveSegments) whose polyline lies within a
+// quarter pixel of the curve, in depth as across the screen. A polyline of n equal parameter
+// steps is within |B''|max / (8 n^2) of the curve, and |B''| <= 6 max |P[i] - 2 P[i+1] + P[i+2]|.
+// A gently curved edge needs a few segments however long it is on screen: a dense network's
+// curves are drawn with a fraction of the segments a length rule gives, which is what a CPU
+// rasteriser pays for.
+int edge_segments(const Vec3 (&cp)[4], double scale) {
+  const double bend = scale * std::max(glm::length(cp[0] - 2.0 * cp[1] + cp[2]),
+                                       glm::length(cp[1] - 2.0 * cp[2] + cp[3]));
+  const double tolerance = 0.25;
+  int s = 1;
+  while (s < kCurveSegments && 0.75 * bend > tolerance * s * s) s *= 2;
+  return s;
+}
+
 // The highest density of the budget's chain at which `live`'s surfaces fit it.
 int start_density(const LiveSurfaces& live, const DensityBudget& budget) {
   return uniform_density(sizes_of(live), budget);
@@ -61,9 +80,14 @@ ViewEvaluation evaluate_view(const Scene& scene, uint64_t revision, const std::s
   ViewEvaluation v;
   v.scheme = r.scheme;
   v.revision = revision;
-  v.fine_budget = {2, r.fine_density, 6, r.budgets.fine_triangles};
-  // The coarse view samples a third as densely (its chain starts at the coarse density).
-  v.coarse_budget = {2, r.coarse_density, 6.0 * r.fine_density / std::max(1, r.coarse_density),
+  // A sample every 8 pixels at rest: the triangles a dense network's faces need (a sphere's
+  // chords are then far below a pixel from it), not four times as many from rounding 6 up.
+  v.fine_budget = {2, r.fine_density, 8, r.budgets.fine_triangles};
+  // The coarse view samples as many times less densely as the densities' ratio: a sample every
+  // 24 pixels with the default densities, so a dense network's faces (a few dozen pixels wide)
+  // are drawn at the chain's lowest level while dragging, where the triangles' count is the
+  // frame's cost on a CPU rasteriser (its chain starts at the coarse density).
+  v.coarse_budget = {2, r.coarse_density, 8.0 * r.fine_density / std::max(1, r.coarse_density),
                      r.budgets.coarse_triangles};
   // Both start at the lowest density, which costs the filling alone, and are then refined to
   // the density that fits their budget: a big network never holds more samples than that.
@@ -187,13 +211,17 @@ bool EvaluatedView::fit_to_screen(
     const std::function<double(const Vec3& centre, double radius)>& pixels, const Document& doc) {
   if (doc.dragging() || fine_revision_ != doc.revision()) return false;
   bool drawn_changed =
-      !fine_->set_densities(choose_densities(sizes_of(*fine_, &pixels), fine_budget_)).empty();
+      !fine_->set_densities(choose_densities(sizes_of(*fine_, &pixels, fine_fitted_), fine_budget_))
+           .empty();
+  fine_fitted_ = true;
   // The coarse view only when it shows the same surfaces (it catches up when a drag starts).
   const bool coarse_current = coarse_revision_ == doc.revision();
   bool coarse_changed =
-      coarse_current &&
-      !coarse_->set_densities(choose_densities(sizes_of(*coarse_, &pixels), coarse_budget_))
-           .empty();
+      coarse_current && !coarse_
+                             ->set_densities(choose_densities(
+                                 sizes_of(*coarse_, &pixels, coarse_fitted_), coarse_budget_))
+                             .empty();
+  coarse_fitted_ |= coarse_current;
   // Curves: network edges by their own size on screen, borders by their surface's.
   std::vector<double> edge_pixels;
   if (doc.scene().network) {
@@ -207,7 +235,7 @@ bool EvaluatedView::fit_to_screen(
       double radius = 0;
       for (const Vec3& p : cp) radius = std::max(radius, glm::length(p - centre));
       edge_pixels.push_back(pixels(centre, radius));
-      segments.push_back(curve_segments(edge_pixels.back()));
+      segments.push_back(edge_segments(cp, radius > 0 ? edge_pixels.back() / (2 * radius) : 0));
     }
     if (fine_->set_curve_segments(segments)) drawn_changed = true;
     if (coarse_current) coarse_changed |= coarse_->set_curve_segments(segments);
@@ -285,6 +313,21 @@ std::string EvaluatedView::density_note() const {
   std::snprintf(buf, sizeof buf, "face densities %d-%d, %zu k of %zu k triangles", *lo, *hi,
                 triangles_of(*fine_) / 1000, fine_budget_.triangles / 1000);
   return buf;
+}
+
+std::string EvaluatedView::drawing_note() const {
+  const std::vector<int> d = fine_->densities();
+  std::string note;
+  if (std::any_of(d.begin(), d.end(), [&](int x) { return x < fine_budget_.max_density; })) {
+    const auto [lo, hi] = std::minmax_element(d.begin(), d.end());
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "densities %d-%d for size on screen (%zu k of %zu k triangles)",
+                  *lo, *hi, triangles_of(*fine_) / 1000, fine_budget_.triangles / 1000);
+    note = buf;
+  }
+  const std::string net = net_note();
+  if (!net.empty()) note += (note.empty() ? "" : "; ") + net;
+  return note;
 }
 
 }  // namespace pl

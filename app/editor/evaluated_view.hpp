@@ -79,6 +79,9 @@ class EvaluatedView {
                      const Document& doc);
   // "face densities 6-24, 412 k of 600 k triangles": for the status bar.
   std::string density_note() const;
+  // For the status bar, when drawing is the limit: the face densities when some face is drawn
+  // below the highest density, and what the control net's thinning hides; empty otherwise.
+  std::string drawing_note() const;
 
   // Which control points are drawn and picked: those readable at their size on screen (from
   // the last fit_to_screen; net_thinning.hpp) and, whatever their size, those of `focus`.
@@ -116,6 +119,8 @@ class EvaluatedView {
 
   std::optional<FaceScheme> scheme_;
   DensityBudget fine_budget_, coarse_budget_;
+  // Whether each view's densities were chosen from sizes on screen yet (they start uniform).
+  bool fine_fitted_ = false, coarse_fitted_ = false;
   std::vector<int> border_segments_;  // per surface, from the last fit_to_screen
   std::vector<CurvatureComb> thin_borders_;
   std::unique_ptr<LiveSurfaces> coarse_, fine_;
