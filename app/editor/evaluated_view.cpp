@@ -50,17 +50,18 @@ int curve_segments(double pixels) {
 }
 
 // Segments of a network edge (cubic Bezier control points cp, `scale` pixels per model unit at
-// the edge): the fewest (a power of two, 1 to kCurveSegments) whose polyline lies within a
-// quarter pixel of the curve, in depth as across the screen. A polyline of n equal parameter
-// steps is within |B''|max / (8 n^2) of the curve, and |B''| <= 6 max |P[i] - 2 P[i+1] + P[i+2]|.
-// A gently curved edge needs a few segments however long it is on screen: a dense network's
-// curves are drawn with a fraction of the segments a length rule gives, which is what a CPU
-// rasteriser pays for.
+// the edge): the fewest (a power of two, 2 to kCurveSegments; 2 so that the midpoint is a
+// sample, where picking and scripts find a curve) whose polyline lies within a quarter pixel of
+// the curve, in depth as across the screen. A polyline of n equal parameter steps is within
+// |B''|max / (8 n^2) of the curve, and |B''| <= 6 max |P[i] - 2 P[i+1] + P[i+2]|. A gently
+// curved edge needs a few segments however long it is on screen: a dense network's curves are
+// drawn with a fraction of the segments a length rule gives, which is what a CPU rasteriser
+// pays for.
 int edge_segments(const Vec3 (&cp)[4], double scale) {
   const double bend = scale * std::max(glm::length(cp[0] - 2.0 * cp[1] + cp[2]),
                                        glm::length(cp[1] - 2.0 * cp[2] + cp[3]));
   const double tolerance = 0.25;
-  int s = 1;
+  int s = 2;
   while (s < kCurveSegments && 0.75 * bend > tolerance * s * s) s *= 2;
   return s;
 }
