@@ -47,16 +47,20 @@ double Camera::half_height() const {
   return distance * std::tan(0.5 * fov_y);
 }
 
-glm::dmat4 Camera::projection(double aspect) const {
+std::array<double, 2> Camera::clip_planes() const {
   // Clip planes hug the framed scene so depth precision stays good at any scale.
   const double r = std::max(scene_radius, 1e-9);
   const double far_plane = distance + 2 * r;
+  if (orthographic) return {std::max(distance - 2 * r, -far_plane), far_plane};
+  return {std::max(distance - 2 * r, far_plane * 1e-4), far_plane};
+}
+
+glm::dmat4 Camera::projection(double aspect) const {
+  const auto [near_plane, far_plane] = clip_planes();
   if (orthographic) {
     const double h = half_height();
-    return glm::ortho(-h * aspect, h * aspect, -h, h, std::max(distance - 2 * r, -far_plane),
-                      far_plane);
+    return glm::ortho(-h * aspect, h * aspect, -h, h, near_plane, far_plane);
   }
-  const double near_plane = std::max(distance - 2 * r, far_plane * 1e-4);
   return glm::perspective(fov_y, aspect, near_plane, far_plane);
 }
 

@@ -6,6 +6,8 @@
 // so yaw = -90 deg, pitch = 0 looks from -y (front), and pitch = +90 deg looks down (top).
 #pragma once
 
+#include <array>
+
 #include <optional>
 #include <span>
 #include <string>
@@ -44,6 +46,8 @@ struct Camera {
   glm::dmat4 view() const;
   // near/far are chosen from the framed scene radius (see frame()).
   glm::dmat4 projection(double aspect) const;
+  // The near and far clipping distances along the view direction from the eye.
+  std::array<double, 2> clip_planes() const;
   // Half the visible height in world units at the target distance.
   double half_height() const;
 

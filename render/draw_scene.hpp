@@ -51,6 +51,10 @@ uint32_t arrow_kind_bits(const std::vector<Arrow>& arrows);
 
 using Polyline = std::vector<Vec3>;
 
+// The sign of the volume the meshes' triangles enclose: +1 (normals outward), -1 (inward), 0
+// when it is too small to tell (flat or degenerate). Meaningful for closed meshes.
+int enclosed_volume_sign(const std::vector<SurfaceMesh>& meshes);
+
 struct DrawScene {
   std::vector<SurfaceMesh> surfaces;
   ControlNet net;
@@ -69,6 +73,10 @@ struct DrawScene {
   std::vector<CurvatureComb> free_curve_combs;
   // Drawn on top of everything in palette::kHighlight (e.g. the edge a panel points at).
   std::vector<Polyline> highlights;
+  // The surfaces bound a solid (a closed network, consistently oriented): +1 with their normals
+  // outward, -1 inward; 0 when they do not (or it is not known). Seen from outside, a solid's
+  // inner side is hidden by its outer side, so the renderer skips it (half the triangles).
+  int closed_orientation = 0;
 
   // Of the surfaces, net and curves: what a camera frames.
   Box bounds() const;

@@ -70,9 +70,10 @@ void Buffer::data(GLenum target, const void* bytes, std::size_t size, GLenum usa
   glBufferData(target, static_cast<GLsizeiptr>(size), bytes, usage);
 }
 
-void Buffer::sub_data(GLenum target, const void* bytes, std::size_t size) const {
+void Buffer::sub_data(GLenum target, const void* bytes, std::size_t size,
+                      std::size_t offset) const {
   glBindBuffer(target, id());
-  glBufferSubData(target, 0, static_cast<GLsizeiptr>(size), bytes);
+  glBufferSubData(target, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(size), bytes);
 }
 
 Program::Program(std::string_view vertex, std::string_view geometry, std::string_view fragment)

@@ -47,7 +47,8 @@ class Buffer : public Name<delete_buffer> {
   Buffer();
   // (Re)allocates and fills the buffer bound to `target`.
   void data(GLenum target, const void* bytes, std::size_t size, GLenum usage) const;
-  void sub_data(GLenum target, const void* bytes, std::size_t size) const;
+  // Replaces `size` bytes from byte `offset` of the buffer bound to `target`.
+  void sub_data(GLenum target, const void* bytes, std::size_t size, std::size_t offset = 0) const;
 };
 
 class VertexArray : public Name<delete_vertex_array> {

@@ -31,67 +31,53 @@ std::vector<Vec3> polylines(const std::vector<Polyline>& ls) {
 
 }  // namespace
 
-GpuSurface::GpuSurface(const SurfaceMesh& mesh) {
-  vao_.bind();
-  upload_attributes(mesh, true);
-  attribute(kPosition, positions_, 3);
-  attribute(kNormal, normals_, 3);
-  attribute(kCurvature, curvatures_, 4);
-  indices_.data(GL_ELEMENT_ARRAY_BUFFER, mesh.triangles.data(),
-                mesh.triangles.size() * sizeof(mesh.triangles[0]), GL_STATIC_DRAW);
-  index_count_ = static_cast<GLsizei>(mesh.triangles.size() * 3);
-  glBindVertexArray(0);
-  revision_ = mesh.revision;
-}
-
-void GpuSurface::update(const SurfaceMesh& mesh) {
-  if (mesh.positions.size() == vertex_count_ &&
-      static_cast<GLsizei>(mesh.triangles.size() * 3) == index_count_) {
-    upload_attributes(mesh, false);
-    revision_ = mesh.revision;
-  } else {
-    *this = GpuSurface(mesh);
-  }
-}
-
-void GpuSurface::upload_attributes(const SurfaceMesh& mesh, bool reallocate) {
-  const std::size_t n = mesh.positions.size();
-  vertex_count_ = n;
-  auto send = [&](const gl::Buffer& b, std::size_t floats) {
-    if (reallocate)
-      b.data(GL_ARRAY_BUFFER, scratch_.data(), floats * sizeof(float), GL_DYNAMIC_DRAW);
-    else
-      b.sub_data(GL_ARRAY_BUFFER, scratch_.data(), floats * sizeof(float));
-  };
-  scratch_.resize(4 * n);
-  auto vec3s = [&](const std::vector<Vec3>& v) {
-    for (std::size_t i = 0; i < n; ++i)
-      for (int k = 0; k < 3; ++k) scratch_[3 * i + k] = static_cast<float>(v[i][k]);
-  };
-  vec3s(mesh.positions);
-  send(positions_, 3 * n);
-  vec3s(mesh.normals);
-  send(normals_, 3 * n);
-  for (std::size_t i = 0; i < n; ++i) {
-    scratch_[4 * i + 0] = static_cast<float>(mesh.gaussian[i]);
-    scratch_[4 * i + 1] = static_cast<float>(mesh.mean[i]);
-    scratch_[4 * i + 2] = static_cast<float>(mesh.kmin[i]);
-    scratch_[4 * i + 3] = static_cast<float>(mesh.kmax[i]);
-  }
-  send(curvatures_, 4 * n);
-}
-
-void GpuSurface::draw() const {
-  glBindVertexArray(vao_.id());
-  glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
-}
-
 GpuPrimitives::GpuPrimitives() {
   vao_.bind();
   positions_.data(GL_ARRAY_BUFFER, nullptr, 0, GL_DYNAMIC_DRAW);
   attribute(kPosition, positions_, 3);
   // Tags and offsets: arrays only once set() has some (the attribute is bound to its buffer then).
   glBindVertexArray(0);
+}
+
+namespace {
+
+// Vertices compared and re-sent in runs of this many: an edit that moved a few curves sends a
+// few runs, not the whole array.
+constexpr std::size_t kRunVertices = 256;
+
+}  // namespace
+
+void GpuPrimitives::send(const gl::Buffer& buffer, std::vector<float>& copy, std::size_t width,
+                         bool reallocate) {
+  if (reallocate || copy.size() != scratch_.size()) {
+    buffer.data(GL_ARRAY_BUFFER, scratch_.data(), scratch_.size() * sizeof(float), GL_DYNAMIC_DRAW);
+    copy = scratch_;
+    return;
+  }
+  // Same size: only the runs that differ from what the buffer holds.
+  const std::size_t run = kRunVertices * width;
+  for (std::size_t at = 0; at < scratch_.size();) {
+    const std::size_t end = std::min(scratch_.size(), at + run);
+    if (!std::equal(scratch_.begin() + std::ptrdiff_t(at), scratch_.begin() + std::ptrdiff_t(end),
+                    copy.begin() + std::ptrdiff_t(at))) {
+      std::size_t last = end;  // extend over the following differing runs: one call each stretch
+      while (last < scratch_.size()) {
+        const std::size_t next = std::min(scratch_.size(), last + run);
+        if (std::equal(scratch_.begin() + std::ptrdiff_t(last),
+                       scratch_.begin() + std::ptrdiff_t(next),
+                       copy.begin() + std::ptrdiff_t(last)))
+          break;
+        last = next;
+      }
+      buffer.sub_data(GL_ARRAY_BUFFER, scratch_.data() + at, (last - at) * sizeof(float),
+                      at * sizeof(float));
+      std::copy(scratch_.begin() + std::ptrdiff_t(at), scratch_.begin() + std::ptrdiff_t(last),
+                copy.begin() + std::ptrdiff_t(at));
+      at = last;
+    } else {
+      at = end;
+    }
+  }
 }
 
 void GpuPrimitives::set(const std::vector<Vec3>& vertices, const std::vector<float>& tags,
@@ -104,25 +90,26 @@ void GpuPrimitives::set(const std::vector<Vec3>& vertices, const std::vector<flo
   };
   vao_.bind();
   floats(vertices);
-  positions_.data(GL_ARRAY_BUFFER, scratch_.data(), scratch_.size() * sizeof(float),
-                  GL_DYNAMIC_DRAW);
+  send(positions_, positions_copy_, 3, false);
+  const bool had_tags = has_tags_, had_offsets = has_offsets_;
   has_tags_ = !tags.empty() && n > 0;
   if (has_tags_) {
     scratch_.assign(tags.begin(), tags.begin() + std::ptrdiff_t(std::min(n, tags.size())));
     scratch_.resize(n, 0.0f);
-    tags_.data(GL_ARRAY_BUFFER, scratch_.data(), n * sizeof(float), GL_DYNAMIC_DRAW);
+    send(tags_, tags_copy_, 1, !had_tags);
     attribute(kTag, tags_, 1);
   } else {
     glDisableVertexAttribArray(kTag);
+    tags_copy_.clear();
   }
   has_offsets_ = !offsets.empty() && n > 0;
   if (has_offsets_) {
     floats(offsets);
-    offsets_.data(GL_ARRAY_BUFFER, scratch_.data(), scratch_.size() * sizeof(float),
-                  GL_DYNAMIC_DRAW);
+    send(offsets_, offsets_copy_, 3, !had_offsets);
     attribute(kOffset, offsets_, 3);
   } else {
     glDisableVertexAttribArray(kOffset);
+    offsets_copy_.clear();
   }
   glBindVertexArray(0);
   count_ = static_cast<GLsizei>(n);
@@ -180,6 +167,7 @@ void GpuPrimitives::draw(GLenum mode, GLsizei count) const {
 void GpuScene::update(const DrawScene& scene) {
   update_geometry(scene);
   borders_.set(polylines(scene.borders), {});
+  own_border_vertices_ = -1;  // a DrawScene's borders do not say which are network curves
   std::vector<const CurvatureComb*> network, borders, free;
   for (const CurvatureComb& c : scene.network_combs) network.push_back(&c);
   for (const CurvatureComb& c : scene.border_combs) borders.push_back(&c);
@@ -188,17 +176,26 @@ void GpuScene::update(const DrawScene& scene) {
 }
 
 void GpuScene::update_geometry(const DrawScene& scene) {
-  if (surfaces_.size() != scene.surfaces.size()) {
-    surfaces_.clear();
-    for (const SurfaceMesh& m : scene.surfaces) surfaces_.emplace_back(m);
-  } else {
-    for (std::size_t i = 0; i < surfaces_.size(); ++i)
-      if (surfaces_[i].revision() != scene.surfaces[i].revision)
-        surfaces_[i].update(scene.surfaces[i]);
-  }
+  update_meshes_and_curves(scene);
+  set_net(scene.net, scene.arrows);
+}
+
+void GpuScene::update_meshes_and_curves(const DrawScene& scene) {
+  surfaces_.update(scene.surfaces);
+  closed_orientation_ = scene.closed_orientation;
+  surface_bounds_ = Box();
+  for (const SurfaceMesh& m : scene.surfaces)
+    for (const Vec3& p : m.positions) surface_bounds_.add(p);
+  set_highlights(scene.highlights);
+  curves_.set(polylines(scene.network_curves), {});
+  free_curves_.set(polylines(scene.free_curves), {});
+  const Box box = scene.bounds();
+  diagonal_ = box.empty() ? 0.0 : glm::length(box.hi - box.lo);
+}
+
+void GpuScene::set_net(const ControlNet& net, std::span<const Arrow> arrows) {
   // Control net: segments as GL_LINES pairs, split by role; points tagged with their style,
   // derived ones first.
-  const ControlNet& net = scene.net;
   std::vector<Vec3> lines, derived_lines;
   for (const auto& s : net.segments) {
     const bool derived =
@@ -224,18 +221,13 @@ void GpuScene::update_geometry(const DrawScene& scene) {
   point_styles_ = point_style_bits(net);
   std::vector<Vec3> arrow_ends;
   std::vector<float> arrow_tags;
-  for (const Arrow& a : scene.arrows) {
+  for (const Arrow& a : arrows) {
     arrow_ends.push_back(a.base);
     arrow_ends.push_back(a.tip);
     arrow_tags.insert(arrow_tags.end(), 2, static_cast<float>(a.kind));
   }
   arrows_.set(arrow_ends, arrow_tags);
-  arrow_kinds_ = arrow_kind_bits(scene.arrows);
-  set_highlights(scene.highlights);
-  curves_.set(polylines(scene.network_curves), {});
-  free_curves_.set(polylines(scene.free_curves), {});
-  const Box box = scene.bounds();
-  diagonal_ = box.empty() ? 0.0 : glm::length(box.hi - box.lo);
+  arrow_kinds_ = arrow_kind_bits({arrows.begin(), arrows.end()});
 }
 
 void GpuScene::set_highlights(const std::vector<Polyline>& highlights) {
@@ -245,8 +237,16 @@ void GpuScene::set_highlights(const std::vector<Polyline>& highlights) {
 void GpuScene::update_curves(std::span<const CurvatureComb* const> network_combs,
                              std::span<const CurvatureComb* const> borders,
                              const std::vector<bool>& border_on_network) {
+  // Borders that are not network curves first: with the network curves shown, the others are
+  // the same curves under them and are not drawn.
   std::vector<Vec3> lines;
-  for (const CurvatureComb* c : borders) add_polyline(c->points, lines);
+  for (int pass = 0; pass < 2; ++pass) {
+    if (pass == 1) own_border_vertices_ = static_cast<GLsizei>(lines.size());
+    for (std::size_t i = 0; i < borders.size(); ++i) {
+      const bool on_network = i < border_on_network.size() && border_on_network[i];
+      if (on_network == (pass == 1)) add_polyline(borders[i]->points, lines);
+    }
+  }
   borders_.set(lines, {});
   set_combs(network_combs, borders, border_on_network);
 }

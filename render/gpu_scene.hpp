@@ -1,6 +1,8 @@
 // A DrawScene uploaded to the GPU. Surface attributes are converted from the core's doubles to
 // floats once per upload; a surface whose revision is unchanged is not uploaded again, and a
-// changed one with the same topology is updated in place (the drag path).
+// changed one with the same topology is updated in place (the drag path). Every surface is in one
+// batch drawn with one call (GpuSurfaceBatch). Lines and points are compared with what was sent
+// and only the runs that differ are sent again, so a drag frame uploads what it moved.
 #pragma once
 
 #include <span>
@@ -8,32 +10,16 @@
 
 #include "render/draw_scene.hpp"
 #include "render/gl_objects.hpp"
+#include "render/gpu_surface_batch.hpp"
 
 namespace pl {
-
-class GpuSurface {
- public:
-  explicit GpuSurface(const SurfaceMesh& mesh);
-  // Re-uploads positions, normals and curvatures (same vertex count: glBufferSubData) or
-  // everything (topology changed).
-  void update(const SurfaceMesh& mesh);
-  void draw() const;
-  uint64_t revision() const { return revision_; }
-
- private:
-  void upload_attributes(const SurfaceMesh& mesh, bool reallocate);
-  gl::VertexArray vao_;
-  gl::Buffer positions_, normals_, curvatures_, indices_;
-  std::size_t vertex_count_ = 0;
-  GLsizei index_count_ = 0;
-  uint64_t revision_ = 0;
-  std::vector<float> scratch_;  // reused conversion buffer: no allocation per drag update
-};
 
 // Line segments (GL_LINES pairs) or points with a per-vertex float tag (point style, arrow kind)
 // and a per-vertex offset (comb teeth: the shader draws the vertex at position + scale * offset, so
 // a new comb scale needs no upload). Missing tags and offsets are not uploaded: the attribute's
-// array is disabled and the shader reads the constant 0 set at draw time.
+// array is disabled and the shader reads the constant 0 set at draw time. set() with as many
+// vertices as before sends only the runs of vertices that changed (a CPU copy of what was sent
+// is kept to compare with).
 class GpuPrimitives {
  public:
   GpuPrimitives();
@@ -44,11 +30,15 @@ class GpuPrimitives {
   bool empty() const { return count_ == 0; }
 
  private:
+  // Sends scratch_ to `buffer` (whole when reallocating or the size changed, else the runs
+  // that differ from `copy`) and keeps `copy` equal to what the buffer holds.
+  void send(const gl::Buffer& buffer, std::vector<float>& copy, std::size_t width, bool reallocate);
   gl::VertexArray vao_;
   gl::Buffer positions_, tags_, offsets_;
   GLsizei count_ = 0;
   bool has_tags_ = false, has_offsets_ = false;
   std::vector<float> scratch_;  // reused conversion buffer
+  std::vector<float> positions_copy_, tags_copy_, offsets_copy_;
 };
 
 // A set of curvature combs as two line lists: the teeth (curve point to tip) and the envelope
@@ -78,6 +68,11 @@ class GpuScene {
   // Surfaces, control net, arrows, network curves and highlights only: the borders and combs stay
   // as they are.
   void update_geometry(const DrawScene& scene);
+  // Surfaces, network curves and highlights: update_geometry without the net and arrows.
+  void update_meshes_and_curves(const DrawScene& scene);
+  // The control net and the derivative arrows only (the editor shows a part of its net: the part
+  // that is readable at the size the surfaces have on screen).
+  void set_net(const ControlNet& net, std::span<const Arrow> arrows);
   // Only the highlighted curves (the editor's picked edge).
   void set_highlights(const std::vector<Polyline>& highlights);
   // Borders (the points of `borders`) and combs held outside a DrawScene (the editor keeps them
@@ -86,10 +81,13 @@ class GpuScene {
   void update_curves(std::span<const CurvatureComb* const> network_combs,
                      std::span<const CurvatureComb* const> borders,
                      const std::vector<bool>& border_on_network);
-  // The drag path: re-uploads one surface's attributes.
-  void update_surface(std::size_t i, const SurfaceMesh& mesh) { surfaces_.at(i).update(mesh); }
+  // The drag path: re-uploads one surface's attributes (its counts unchanged).
+  void update_surface(std::size_t i, const SurfaceMesh& mesh) { surfaces_.update_surface(i, mesh); }
 
-  const std::vector<GpuSurface>& surfaces() const { return surfaces_; }
+  const GpuSurfaceBatch& surfaces() const { return surfaces_; }
+  // DrawScene::closed_orientation and the box of the surfaces, as last uploaded.
+  int closed_orientation() const { return closed_orientation_; }
+  const Box& surface_bounds() const { return surface_bounds_; }
   // Net lines between editable points, and those touching a derived point.
   const GpuPrimitives& net_lines() const { return net_lines_; }
   const GpuPrimitives& derived_net_lines() const { return derived_net_lines_; }
@@ -104,6 +102,9 @@ class GpuScene {
   uint32_t arrow_kinds() const { return arrow_kinds_; }
   const GpuPrimitives& network_curves() const { return curves_; }
   const GpuPrimitives& borders() const { return borders_; }
+  // The first vertices of borders() that are not network curves (update_curves puts them
+  // first); -1 when not known (update() from a DrawScene): every border then counts as own.
+  GLsizei own_border_vertices() const { return own_border_vertices_; }
   const GpuCombs& network_combs() const { return network_combs_; }
   // The scene's free curves and their combs.
   const GpuPrimitives& free_curves() const { return free_curves_; }
@@ -122,7 +123,10 @@ class GpuScene {
                  std::span<const CurvatureComb* const> borders,
                  const std::vector<bool>& border_on_network,
                  std::span<const CurvatureComb* const> free_combs = {});
-  std::vector<GpuSurface> surfaces_;
+  GpuSurfaceBatch surfaces_;
+  int closed_orientation_ = 0;
+  Box surface_bounds_;
+  GLsizei own_border_vertices_ = -1;
   GpuPrimitives net_lines_, derived_net_lines_, net_points_, arrows_, curves_, borders_,
       highlights_, free_curves_;
   uint32_t point_styles_ = 0, arrow_kinds_ = 0;

@@ -1,6 +1,7 @@
 #include "render/scene_renderer.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
+#include <limits>
 
 namespace pl {
 
@@ -29,6 +30,22 @@ void set(GLint loc, const Rgb& c) {
 template <std::size_t N>
 void set(GLint loc, const std::array<Rgb, N>& colors) {
   glUniform3fv(loc, static_cast<GLsizei>(N), colors[0].data());
+}
+
+// True when the eye is outside `box` and the near clipping plane cuts nothing of it.
+bool sees_outside_only(const Camera& camera, const Box& box) {
+  if (box.empty()) return false;
+  const Vec3 eye = camera.eye(), f = camera.forward();
+  const bool inside = eye.x >= box.lo.x && eye.x <= box.hi.x && eye.y >= box.lo.y &&
+                      eye.y <= box.hi.y && eye.z >= box.lo.z && eye.z <= box.hi.z;
+  if (inside) return false;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (int c = 0; c < 8; ++c) {
+    const Vec3 corner(c & 1 ? box.hi.x : box.lo.x, c & 2 ? box.hi.y : box.lo.y,
+                      c & 4 ? box.hi.z : box.lo.z);
+    nearest = std::min(nearest, glm::dot(corner - eye, f));
+  }
+  return nearest > camera.clip_planes()[0];
 }
 
 }  // namespace
@@ -91,7 +108,15 @@ void SceneRenderer::draw(const GpuScene& scene, const Camera& camera,
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, color_map_.id());
   glUniform1i(surface_.uniform("u_color_map"), 0);
-  for (const GpuSurface& s : scene.surfaces()) s.draw();
+  // A solid seen from outside, with nothing of it cut by the near plane: its inner side is
+  // hidden, so it is not drawn (on a CPU rasteriser that halves the surfaces' cost).
+  const int closed = scene.closed_orientation();
+  if (closed != 0 && sees_outside_only(camera, scene.surface_bounds())) {
+    glEnable(GL_CULL_FACE);
+    glCullFace(closed > 0 ? GL_BACK : GL_FRONT);
+  }
+  scene.surfaces().draw();
+  glDisable(GL_CULL_FACE);
 
   glEnable(GL_BLEND);
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
@@ -104,7 +129,11 @@ void SceneRenderer::draw(const GpuScene& scene, const Camera& camera,
   const bool network = settings.network_curves || (lone_combs && has_network);
   // Curves behind a surface show faintly, as every overlay does: a closed shape's back is read,
   // not confused with its front.
-  if (borders) draw_lines(scene.borders(), vp, v, palette::kBorder, 0.85f, 1.4f * s, true);
+  // A network face's border is its edge's curve: with the network curves shown it is not drawn
+  // again under them.
+  if (borders)
+    draw_lines(scene.borders(), vp, v, palette::kBorder, 0.85f, 1.4f * s, true, 0.0f, 0.0f,
+               network ? scene.own_border_vertices() : -1);
   if (network)
     draw_lines(scene.network_curves(), vp, v, palette::kNetworkCurve, 1.0f, 2.6f * s, true);
   // Free curves are objects of their own: always shown.
@@ -203,7 +232,7 @@ void SceneRenderer::draw_tint(const GpuScene& scene, std::span<const int> surfac
   glUniformMatrix4fv(tint_.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(vp));
   glUniform4f(tint_.uniform("u_color"), color[0], color[1], color[2], color[3]);
   for (int i : surfaces)
-    if (i >= 0 && i < int(scene.surfaces().size())) scene.surfaces()[i].draw();
+    if (i >= 0) scene.surfaces().draw_surface(std::size_t(i));
   glDisable(GL_POLYGON_OFFSET_FILL);
   glDisable(GL_BLEND);
   glDepthMask(GL_TRUE);

@@ -2,6 +2,7 @@
 #include "app/cli/cli.hpp"
 #include "app/cli/commands.hpp"
 #include "app/cli/load_input.hpp"
+#include "app/cli/progress_line.hpp"
 #include "app/cli/work_limits.hpp"
 #include "core/analysis/scene_analysis.hpp"
 #include "core/io/input_limits.hpp"
@@ -18,6 +19,7 @@ int run_analyze(std::span<const std::string> args, std::ostream& out, std::ostre
   const Scene scene = load_input(file);
   check_work_limits(scene, density, file);
   TessellationCache cache;
+  ProgressLine::set_stage("evaluating the surfaces");
   const SceneSurfaces surfaces = evaluate_scene(scene, density, scheme, cache, file);
   // The report's figures are finite only if every sample is.
   for (const SceneSurface& s : surfaces.surfaces) check_finite(*s.evaluator, s.name, file);

@@ -6,6 +6,7 @@
 
 #include "app/cli/arguments.hpp"
 #include "app/cli/commands.hpp"
+#include "app/cli/progress_line.hpp"
 #include "core/base/data_error.hpp"
 
 namespace pl {
@@ -69,7 +70,11 @@ int run_cli(std::span<const std::string> args, std::ostream& out, std::ostream& 
       throw UsageError("the editor is not part of this build yet; use a sub-command");
     }
     for (const Command& c : commands())
-      if (args[0] == c.name) return c.run(args.subspan(1), out, err);
+      if (args[0] == c.name) {
+        // Erased before anything below reports an error.
+        const ProgressLine progress("patchlab " + std::string(c.name));
+        return c.run(args.subspan(1), out, err);
+      }
     throw UsageError("unknown command \"" + args[0] + "\"");
   } catch (const UsageError& e) {
     err << "patchlab: " << e.what() << "\n";

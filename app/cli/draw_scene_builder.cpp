@@ -123,6 +123,15 @@ void append_free_curve(DrawScene& d, const SceneCurve& c, int comb_teeth) {
   }
 }
 
+int closed_orientation(const Scene& scene, const SceneSurfaces& surfaces,
+                       const std::vector<SurfaceMesh>& meshes) {
+  if (!scene.network || !scene.patches.empty() || scene.network->faces.empty()) return 0;
+  if (surfaces.shared_edges.size() != scene.network->edges.size()) return 0;
+  for (const SceneSurface& s : surfaces.surfaces)
+    if (s.face < 0) return 0;
+  return enclosed_volume_sign(meshes);
+}
+
 DrawScene build_draw_scene(const Scene& scene, const SceneSurfaces& surfaces, int comb_teeth) {
   DrawScene d;
   for (const SceneCurve& c : scene.curves) append_free_curve(d, c, comb_teeth);
@@ -162,6 +171,7 @@ DrawScene build_draw_scene(const Scene& scene, const SceneSurfaces& surfaces, in
   for (const ScenePatch& p : scene.patches) append_patch_net(d, *p.patch, PointRole::Editable);
   for (const SceneSurface& s : surfaces.surfaces)
     if (s.face >= 0) append_patch_net(d, s.evaluator->patch(), PointRole::Derived, &network_points);
+  d.closed_orientation = closed_orientation(scene, surfaces, d.surfaces);
   return d;
 }
 

@@ -20,6 +20,12 @@ namespace pl {
 DrawScene build_draw_scene(const Scene& scene, const SceneSurfaces& surfaces,
                            int comb_teeth = DisplaySettings().comb_teeth);
 
+// DrawScene::closed_orientation of an evaluated scene: a network alone whose every edge joins
+// two faces (validation makes shared edges run opposite ways: a consistent orientation) bounds
+// a solid; which side its normals face is the sign of the volume its meshes enclose.
+int closed_orientation(const Scene& scene, const SceneSurfaces& surfaces,
+                       const std::vector<SurfaceMesh>& meshes);
+
 // Appends one patch's control net to d: its positions as points of `role` (kinds from the patch),
 // its net lines and its derivative arrows. With `shared`, a position found there exactly (the
 // network's vertices and handles) is that point instead of a new one.

@@ -5,6 +5,7 @@
 #include "app/cli/cli.hpp"
 #include "app/cli/commands.hpp"
 #include "app/cli/load_input.hpp"
+#include "app/cli/progress_line.hpp"
 #include "app/cli/work_limits.hpp"
 #include "core/analysis/curve_analysis.hpp"
 #include "core/cad/cad_export.hpp"
@@ -50,9 +51,11 @@ int run_export(std::span<const std::string> args, std::ostream& out, std::ostrea
   const auto scheme = parse_scheme_option(a.value("--scheme"));
   mesh_format_for(*target);  // reject an unknown format before any work
   const std::string file = a.positional()[0];
+  ProgressLine::set_stage("reading " + file);
   const Scene scene = load_input(file);
   check_work_limits(scene, density, file);
   TessellationCache cache;
+  ProgressLine::set_stage("evaluating the surfaces");
   const SceneSurfaces surfaces = evaluate_scene(scene, density, scheme, cache, file);
   std::vector<SurfaceMesh> meshes;
   for (const SceneSurface& s : surfaces.surfaces)
@@ -63,6 +66,7 @@ int run_export(std::span<const std::string> args, std::ostream& out, std::ostrea
   if (mesh_format_for(*target) == MeshFormat::Obj)
     for (std::size_t i = 0; i < scene.curves.size(); ++i)
       polylines.push_back(curve_polyline(scene.curves[i], curve_name(scene.curves[i], i), density));
+  ProgressLine::set_stage("writing " + *target);
   export_meshes(meshes, *target, file, polylines);
   out << "wrote " << meshes.size() << " patch(es)";
   if (!polylines.empty()) out << " and " << polylines.size() << " curve(s)";

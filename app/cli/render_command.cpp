@@ -9,6 +9,7 @@
 #include "app/cli/commands.hpp"
 #include "app/cli/draw_scene_builder.hpp"
 #include "app/cli/load_input.hpp"
+#include "app/cli/progress_line.hpp"
 #include "app/cli/work_limits.hpp"
 #include "core/analysis/curve_analysis.hpp"
 #include "core/base/data_error.hpp"
@@ -106,6 +107,7 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
   for (std::size_t i = 0; i < scene.curves.size(); ++i)
     check_curve_finite(scene.curves[i], i, density, file);
   TessellationCache cache;
+  ProgressLine::set_stage("evaluating the surfaces");
   // No comb work unless combs are drawn.
   const int teeth = settings.combs ? settings.comb_teeth : 0;
   std::vector<DrawScene> draws;
@@ -163,6 +165,7 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
     gpu.reserve(draws.size());
     for (const DrawScene& d : draws) gpu.emplace_back(d);
     for (std::size_t i = 0; i < gpu.size(); ++i) request.panels[i].scene = &gpu[i];
+    ProgressLine::set_stage("drawing the image");
     const Image image = render_frame(renderer, request);
     write_file_atomically(*target, encode_png(image));
   } catch (const GlContextError& e) {

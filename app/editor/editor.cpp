@@ -14,6 +14,7 @@
 #include "app/editor/logic/add_edge_tool.hpp"
 #include "app/editor/logic/add_vertex_tool.hpp"
 #include "app/editor/logic/editor_paths.hpp"
+#include "app/editor/logic/launch_time.hpp"
 #include "app/editor/logic/make_face_tool.hpp"
 #include "app/editor/logic/select_tool.hpp"
 #include "app/editor/logic/split_edge_tool.hpp"
@@ -27,6 +28,8 @@ namespace {
 // How long the loop sleeps waiting for input when nothing animates (a tool should not spin a
 // core while idle); short enough that a release's fine surfaces appear at once anyway.
 constexpr double kIdleWaitSeconds = 0.25;
+// While a scene is evaluated behind the progress bar: repaint often enough to look alive.
+constexpr double kLoadingFrameSeconds = 0.05;
 
 }  // namespace
 
@@ -37,7 +40,9 @@ Editor::Editor(GlWindow& window, EditorOptions options, DocumentSession session)
       dialogs_(file_dialog_handlers()),
       autosave_(options_.bench_drag || options_.screenshot ? std::nullopt : state_dir()) {
   if (const auto dir = config_dir()) prefs_file_ = *dir / "preferences.ini";
-  prefs_ = prefs_file_ ? load_preferences(*prefs_file_) : default_preferences();
+  // The benchmark measures the default settings, whatever the user chose.
+  prefs_ =
+      prefs_file_ && !options_.bench_drag ? load_preferences(*prefs_file_) : default_preferences();
   ui_scale_ = window_.follow_ui_scale(prefs_.ui_scale);
   tools_.add(std::make_unique<SelectTool>());
   tools_.add(std::make_unique<AddVertexTool>());
@@ -126,6 +131,12 @@ void Editor::set_compare(bool on) {
 
 void Editor::follow_document() {
   if (session_.serial() != session_serial_) after_document_replaced();
+  if (views_.poll()) {
+    // The worker's evaluation is uploaded: the first frame of the scene follows.
+    if (!loaded_ms_) loaded_ms_ = ms_since_launch();
+    nav_.unframe();
+    for (ScenePicker& p : pickers_) p.reset();
+  }
   const Document& doc = session_.doc();
   try {
     if (views_.follow(doc, prefs_.display)) status_.eval_ms = views_.last_eval_ms();
@@ -134,6 +145,7 @@ void Editor::follow_document() {
     views_.fit_to_screen(
         [&](const Vec3& c, double r) { return 2 * r / world_per_pixel(nav_.camera(), rect, c); },
         doc);
+    views_.show_net(net_focus(), kPointSize * ui_scale_, doc);
   } catch (const DataError& e) {
     status_.say(e.what());
   }
@@ -144,6 +156,31 @@ void Editor::follow_document() {
   // Continuity figures follow the fine surfaces only: analysing every drag step would cost
   // more than the drag itself.
   follow_continuity(continuity_, views_, doc);
+}
+
+NetFocus Editor::net_focus() const {
+  using Kind = SelectionItem::Kind;
+  std::vector<PointRef> points = selection_.points();
+  std::vector<int> edges = selection_.of_kind(Kind::Edge), faces = selection_.of_kind(Kind::Face),
+                   patches = selection_.of_kind(Kind::Patch);
+  const Document& doc = session_.doc();
+  if (doc.dragging())
+    points.insert(points.end(), doc.drag_points().begin(), doc.drag_points().end());
+  // Under the cursor: the point or edge, and the surface the ray meets (not the item a click
+  // would select, which a derived point shown for that surface would take away again).
+  if (const auto& item = mouse_.under.item) {
+    if (item->kind == Kind::Point) points.push_back(item->point);
+    if (item->kind == Kind::Edge) edges.push_back(item->index);
+  }
+  if (mouse_.under.surface && views_.ready() && mouse_.panel >= 0) {
+    const auto& surfaces = views_.panel(mouse_.panel).shown().surfaces().surfaces;
+    const int s = mouse_.under.surface->surface;
+    if (s >= 0 && s < int(surfaces.size())) {
+      if (surfaces[s].face >= 0) faces.push_back(surfaces[s].face);
+      if (surfaces[s].patch >= 0) patches.push_back(surfaces[s].patch);
+    }
+  }
+  return pl::net_focus(points, edges, faces, patches);
 }
 
 void Editor::update_title() {
@@ -164,7 +201,10 @@ int Editor::run() {
     // ImGui needs to lay its windows out, or a gesture).
     const bool busy = frames_ < 4 || release_time_ || session_.doc().dragging() ||
                       mouse_.tool_has_it || nav_.gesture() != ViewNavigator::Gesture::None;
-    if (busy)
+    if (views_.loading())
+      glfwWaitEventsTimeout(
+          kLoadingFrameSeconds);  // repaint the progress, leave the worker the cores
+    else if (busy)
       glfwPollEvents();
     else
       glfwWaitEventsTimeout(kIdleWaitSeconds);
@@ -185,6 +225,7 @@ void Editor::draw_interface(const ColorRange& range) {
   figures.coarse = views_.ready() && !views_.settled();
   figures.selected = selection_.size();
   figures.tool = tools_.active().name();
+  if (views_.ready()) figures.drawing = views_.main()->drawing_note();
   if (mouse_.under.item) figures.under = describe(*mouse_.under.item);
   if (work_plane_.shown && mouse_.panel >= 0) {
     const ImGuiIO& io = ImGui::GetIO();
@@ -259,6 +300,7 @@ void Editor::frame() {
   f.hover = &mouse_.under;
   f.probe = &mouse_.probe;
   f.ui_scale = ui_scale_;
+  f.title = session_.title();
   const ColorRange range = views_.colour_range(prefs_.display, session_.doc().revision());
   painter_.paint(f, range);
   draw_tool_feedback();
@@ -266,6 +308,7 @@ void Editor::frame() {
   files_frame();
   update_title();
   window_.end_frame();
+  if (!first_frame_ms_) first_frame_ms_ = ms_since_launch();
   key_presses_.clear();
   if (debugging()) report_selection_change();
   if (options_.debug_state) report_state();
@@ -278,9 +321,12 @@ void Editor::frame() {
   // The work of a frame, not the idle wait for input before it.
   status_.add_frame(std::chrono::duration<double, std::milli>(now - start).count());
   ++frames_;
+  ready_frames_ = views_.ready() ? ready_frames_ + 1 : 0;
   // Report only once the layout is final (ImGui hides new windows on their first frame).
-  if (frames_ >= 3) report_debug_items();
-  if (frames_ == 3 && options_.screenshot) {
+  if (ready_frames_ >= 3) report_debug_items();
+  // A scene that cannot be shown is shot with its message.
+  const bool failed = !views_.ready() && !views_.loading() && frames_ >= 3;
+  if (options_.screenshot && (ready_frames_ == 3 || failed)) {
     take_screenshot(*options_.screenshot);
     quit_ = true;
   }

@@ -92,6 +92,8 @@ class Editor {
   // editor.cpp
   void frame();
   void follow_document();
+  // The objects whose control points are shown whatever their size on screen.
+  NetFocus net_focus() const;
   void after_document_replaced();
   void rebuild_views(bool compare);
   void update_title();
@@ -199,6 +201,9 @@ class Editor {
   bool quit_ = false;
   bool show_help_ = false;
   int frames_ = 0;
+  int ready_frames_ = 0;  // frames since the views were last ready (a scene shown)
+  // Since the process started: to the first frame swapped, and to the scene shown.
+  std::optional<double> first_frame_ms_, loaded_ms_;
   std::string shown_title_;
   float ui_scale_ = 1;
 };

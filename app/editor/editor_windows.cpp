@@ -67,6 +67,10 @@ void draw_status_bar(const StatusLine& status, const StatusFigures& f, float s) 
     ImGui::SameLine();
     ImGui::TextDisabled("  |  %s", f.under.c_str());
   }
+  if (!f.drawing.empty()) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("  |  %s", f.drawing.c_str());
+  }
   if (!f.plane.empty()) {
     ImGui::SameLine();
     ImGui::TextDisabled("  |  %s", f.plane.c_str());

@@ -24,6 +24,9 @@ struct StatusFigures {
   std::string under;         // what lies under the cursor ("face 1"), may be empty
   std::string plane;         // the cursor on the work plane, when its grid is shown
   std::string tool;          // the active tool's name
+  // How the view is drawn when it is drawn with less than it could (face densities for their
+  // size on screen, control points thinned), may be empty.
+  std::string drawing;
 };
 
 // The renderer's key of the control points' symbols (render_point_key) as a texture for F1,

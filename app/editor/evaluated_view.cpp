@@ -1,6 +1,7 @@
 #include "app/editor/evaluated_view.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "app/cli/draw_scene_builder.hpp"
@@ -14,13 +15,16 @@ std::string source_of(const Document& doc) {
 }
 
 // Sizes of the surfaces as they are evaluated; pixels from `pixels` when given.
+// `fitted`: whether the densities were chosen from sizes on screen already (SurfaceSize).
 std::vector<SurfaceSize> sizes_of(
-    const LiveSurfaces& live, const std::function<double(const Vec3&, double)>* pixels = nullptr) {
+    const LiveSurfaces& live, const std::function<double(const Vec3&, double)>* pixels = nullptr,
+    bool fitted = true) {
   std::vector<SurfaceSize> sizes;
   for (const SceneSurface& s : live.surfaces().surfaces) {
     SurfaceSize z;
     z.triangles = s.evaluator->tessellation().triangles.size();
     z.density = s.evaluator->tessellation().density;
+    z.fitted = fitted;
     if (pixels) {
       const Sphere sphere = bounding_sphere(s.evaluator->patch());
       z.pixels = (*pixels)(sphere.centre, sphere.radius);
@@ -45,6 +49,23 @@ int curve_segments(double pixels) {
   return s;
 }
 
+// Segments of a network edge (cubic Bezier control points cp, `scale` pixels per model unit at
+// the edge): the fewest (a power of two, 2 to kCurveSegments; 2 so that the midpoint is a
+// sample, where picking and scripts find a curve) whose polyline lies within a quarter pixel of
+// the curve, in depth as across the screen. A polyline of n equal parameter steps is within
+// |B''|max / (8 n^2) of the curve, and |B''| <= 6 max |P[i] - 2 P[i+1] + P[i+2]|. A gently
+// curved edge needs a few segments however long it is on screen: a dense network's curves are
+// drawn with a fraction of the segments a length rule gives, which is what a CPU rasteriser
+// pays for.
+int edge_segments(const Vec3 (&cp)[4], double scale) {
+  const double bend = scale * std::max(glm::length(cp[0] - 2.0 * cp[1] + cp[2]),
+                                       glm::length(cp[1] - 2.0 * cp[2] + cp[3]));
+  const double tolerance = 0.25;
+  int s = 2;
+  while (s < kCurveSegments && 0.75 * bend > tolerance * s * s) s *= 2;
+  return s;
+}
+
 // The highest density of the budget's chain at which `live`'s surfaces fit it.
 int start_density(const LiveSurfaces& live, const DensityBudget& budget) {
   return uniform_density(sizes_of(live), budget);
@@ -52,42 +73,89 @@ int start_density(const LiveSurfaces& live, const DensityBudget& budget) {
 
 }  // namespace
 
-EvaluatedView::EvaluatedView(const Document& doc, std::optional<FaceScheme> scheme,
-                             int coarse_density, int fine_density, bool combs, int comb_teeth,
-                             ViewBudgets budgets)
-    : scheme_(scheme),
-      // The coarse view samples a third as densely (its chain starts at the coarse density).
-      fine_budget_{2, fine_density, 6, budgets.fine_triangles},
-      coarse_budget_{2, coarse_density, 6.0 * fine_density / std::max(1, coarse_density),
-                     budgets.coarse_triangles},
-      coarse_(doc.scene(), coarse_density, scheme, source_of(doc), doc.revision()),
-      // At rest a drag's release moves points once: the fine view keeps no jets.
-      fine_(doc.scene(), start_density(coarse_, fine_budget_), scheme, source_of(doc),
-            doc.revision(), SampleStorage::Compact),
-      curves_(combs, comb_teeth),
-      fine_revision_(doc.revision()),
-      coarse_revision_(doc.revision()) {
-  const int coarse_start = start_density(coarse_, coarse_budget_);
-  if (coarse_start != coarse_density)
-    coarse_.set_densities(std::vector<int>(coarse_.surfaces().surfaces.size(), coarse_start));
-  gpu_fine_.update(fine_.draw());
-  gpu_coarse_.update(coarse_.draw());
-  follow_curves(doc, fine_, doc.revision(), {}, gpu_fine_, fine_curves_serial_);
+ViewEvaluation evaluate_view(const Scene& scene, uint64_t revision, const std::string& source,
+                             const ViewRequest& r, const ViewProgress& progress) {
+  auto report = [&](double f, const char* stage) {
+    if (progress) progress(f, stage);
+  };
+  ViewEvaluation v;
+  v.scheme = r.scheme;
+  v.revision = revision;
+  // A sample every 8 pixels at rest: the triangles a dense network's faces need (a sphere's
+  // chords are then far below a pixel from it), not four times as many from rounding 6 up.
+  v.fine_budget = {2, r.fine_density, 8, r.budgets.fine_triangles};
+  // The coarse view samples as many times less densely as the densities' ratio: a sample every
+  // 24 pixels with the default densities, so a dense network's faces (a few dozen pixels wide)
+  // are drawn at the chain's lowest level while dragging, where the triangles' count is the
+  // frame's cost on a CPU rasteriser (its chain starts at the coarse density).
+  v.coarse_budget = {2, r.coarse_density, 8.0 * r.fine_density / std::max(1, r.coarse_density),
+                     r.budgets.coarse_triangles};
+  // Both start at the lowest density, which costs the filling alone, and are then refined to
+  // the density that fits their budget: a big network never holds more samples than that.
+  report(0.0, "filling the network");
+  const int first = std::min(2, r.coarse_density);
+  v.coarse = std::make_unique<LiveSurfaces>(scene, first, r.scheme, source, revision);
+  const std::size_t n = v.coarse->surfaces().surfaces.size();
+  report(0.25, "evaluating the drag surfaces");
+  const int coarse_start = start_density(*v.coarse, v.coarse_budget);
+  if (coarse_start != first) v.coarse->set_densities(std::vector<int>(n, coarse_start));
+  // At rest a drag's release moves points once: the fine view keeps no jets.
+  report(0.3, "filling the network");
+  const int fine_start = start_density(*v.coarse, v.fine_budget);
+  v.fine = std::make_unique<LiveSurfaces>(scene, std::min(first, fine_start), r.scheme, source,
+                                          revision, SampleStorage::Compact);
+  // The fine surfaces in slices, so that the progress moves.
+  std::vector<int> densities = v.fine->densities();
+  constexpr std::size_t kSlices = 16;
+  for (std::size_t k = 0; k < kSlices; ++k) {
+    report(0.5 + 0.45 * double(k) / kSlices, "evaluating the surfaces");
+    for (std::size_t i = n * k / kSlices; i < n * (k + 1) / kSlices && i < densities.size(); ++i)
+      densities[i] = fine_start;
+    v.fine->set_densities(densities);
+  }
+  report(0.95, "sampling the borders");
+  v.curves = std::make_unique<LiveCurves>(r.combs, r.comb_teeth);
+  v.curves->follow(scene, v.fine->surfaces(), revision, revision, {},
+                   &v.fine->evaluation().filling().topology());
+  report(1.0, "done");
+  return v;
+}
+
+EvaluatedView::EvaluatedView(const Document& doc, const ViewRequest& request)
+    : EvaluatedView(evaluate_view(doc.scene(), doc.revision(), source_of(doc), request)) {}
+
+EvaluatedView::EvaluatedView(ViewEvaluation v)
+    : scheme_(v.scheme),
+      fine_budget_(v.fine_budget),
+      coarse_budget_(v.coarse_budget),
+      coarse_(std::move(v.coarse)),
+      fine_(std::move(v.fine)),
+      curves_(std::move(v.curves)),
+      fine_revision_(v.revision),
+      coarse_revision_(v.revision) {
+  gpu_fine_.update_meshes_and_curves(fine_->draw());
+  gpu_coarse_.update_meshes_and_curves(coarse_->draw());
+  upload_net(*fine_, gpu_fine_, fine_net_key_);
+  // The curves are at the evaluation's revision already: upload them.
+  fine_curves_serial_ = curves_->serial();
+  gpu_fine_.update_curves(curves_->network_comb_refs(), drawn_borders(),
+                          curves_->border_on_network());
 }
 
 bool EvaluatedView::follow_curves(const Document& doc, const LiveSurfaces& live, uint64_t from,
                                   const std::vector<int>& changed, GpuScene& gpu,
                                   uint64_t& gpu_serial) {
-  curves_.follow(doc.scene(), live.surfaces(), from, live.synced_revision(), changed);
-  if (gpu_serial == curves_.serial()) return false;
-  gpu_serial = curves_.serial();
-  gpu.update_curves(curves_.network_comb_refs(), drawn_borders(), curves_.border_on_network());
+  curves_->follow(doc.scene(), live.surfaces(), from, live.synced_revision(), changed,
+                  &live.evaluation().filling().topology());
+  if (gpu_serial == curves_->serial()) return false;
+  gpu_serial = curves_->serial();
+  gpu.update_curves(curves_->network_comb_refs(), drawn_borders(), curves_->border_on_network());
   return true;
 }
 
 std::vector<const CurvatureComb*> EvaluatedView::drawn_borders() {
-  const auto& borders = curves_.borders();
-  if (border_segments_.size() != borders.size()) return curves_.border_refs();
+  const auto& borders = curves_->borders();
+  if (border_segments_.size() != borders.size()) return curves_->border_refs();
   thin_borders_.clear();
   std::size_t count = 0;
   for (const auto& surface : borders) count += surface.size();
@@ -114,28 +182,29 @@ bool EvaluatedView::follow(const Document& doc) {
     const bool was_fine = !coarse_shown_;
     coarse_shown_ = true;
     if (coarse_revision_ == doc.revision())
-      return follow_curves(doc, coarse_, coarse_.synced_revision(), {}, gpu_coarse_,
+      return follow_curves(doc, *coarse_, coarse_->synced_revision(), {}, gpu_coarse_,
                            coarse_curves_serial_) ||
              was_fine;
     coarse_revision_ = doc.revision();  // first: a failing sync is not retried every frame
-    const uint64_t from = coarse_.synced_revision();
-    const std::vector<int> changed = coarse_.sync(doc.scene(), doc.revision());
-    last_eval_ms_ = coarse_.last_sync_ms();
-    gpu_coarse_.update_geometry(coarse_.draw());
-    follow_curves(doc, coarse_, from, changed, gpu_coarse_, coarse_curves_serial_);
+    const uint64_t from = coarse_->synced_revision();
+    const std::vector<int> changed = coarse_->sync(doc.scene(), doc.revision());
+    last_eval_ms_ = coarse_->last_sync_ms();
+    gpu_coarse_.update_meshes_and_curves(coarse_->draw());
+    follow_curves(doc, *coarse_, from, changed, gpu_coarse_, coarse_curves_serial_);
     return true;
   }
   const bool was_coarse = coarse_shown_;
   coarse_shown_ = false;
   if (fine_revision_ == doc.revision())
-    return follow_curves(doc, fine_, fine_.synced_revision(), {}, gpu_fine_, fine_curves_serial_) ||
+    return follow_curves(doc, *fine_, fine_->synced_revision(), {}, gpu_fine_,
+                         fine_curves_serial_) ||
            was_coarse;
   fine_revision_ = doc.revision();
-  const uint64_t from = fine_.synced_revision();
-  const std::vector<int> changed = fine_.sync(doc.scene(), doc.revision());
-  last_eval_ms_ = fine_.last_sync_ms();
-  gpu_fine_.update_geometry(fine_.draw());
-  follow_curves(doc, fine_, from, changed, gpu_fine_, fine_curves_serial_);
+  const uint64_t from = fine_->synced_revision();
+  const std::vector<int> changed = fine_->sync(doc.scene(), doc.revision());
+  last_eval_ms_ = fine_->last_sync_ms();
+  gpu_fine_.update_meshes_and_curves(fine_->draw());
+  follow_curves(doc, *fine_, from, changed, gpu_fine_, fine_curves_serial_);
   return true;
 }
 
@@ -143,13 +212,19 @@ bool EvaluatedView::fit_to_screen(
     const std::function<double(const Vec3& centre, double radius)>& pixels, const Document& doc) {
   if (doc.dragging() || fine_revision_ != doc.revision()) return false;
   bool drawn_changed =
-      !fine_.set_densities(choose_densities(sizes_of(fine_, &pixels), fine_budget_)).empty();
+      !fine_->set_densities(choose_densities(sizes_of(*fine_, &pixels, fine_fitted_), fine_budget_))
+           .empty();
+  fine_fitted_ = true;
   // The coarse view only when it shows the same surfaces (it catches up when a drag starts).
   const bool coarse_current = coarse_revision_ == doc.revision();
   bool coarse_changed =
-      coarse_current &&
-      !coarse_.set_densities(choose_densities(sizes_of(coarse_, &pixels), coarse_budget_)).empty();
+      coarse_current && !coarse_
+                             ->set_densities(choose_densities(
+                                 sizes_of(*coarse_, &pixels, coarse_fitted_), coarse_budget_))
+                             .empty();
+  coarse_fitted_ |= coarse_current;
   // Curves: network edges by their own size on screen, borders by their surface's.
+  std::vector<double> edge_pixels;
   if (doc.scene().network) {
     std::vector<int> segments;
     const Network& net = *doc.scene().network;
@@ -160,13 +235,14 @@ bool EvaluatedView::fit_to_screen(
       const Vec3 centre = (cp[0] + cp[1] + cp[2] + cp[3]) / 4.0;
       double radius = 0;
       for (const Vec3& p : cp) radius = std::max(radius, glm::length(p - centre));
-      segments.push_back(curve_segments(pixels(centre, radius)));
+      edge_pixels.push_back(pixels(centre, radius));
+      segments.push_back(edge_segments(cp, radius > 0 ? edge_pixels.back() / (2 * radius) : 0));
     }
-    if (fine_.set_curve_segments(segments)) drawn_changed = true;
-    if (coarse_current) coarse_changed |= coarse_.set_curve_segments(segments);
+    if (fine_->set_curve_segments(segments)) drawn_changed = true;
+    if (coarse_current) coarse_changed |= coarse_->set_curve_segments(segments);
   }
   std::vector<int> borders;
-  for (const SceneSurface& s : fine_.surfaces().surfaces) {
+  for (const SceneSurface& s : fine_->surfaces().surfaces) {
     const Sphere sphere = bounding_sphere(s.evaluator->patch());
     borders.push_back(curve_segments(pixels(sphere.centre, sphere.radius)));
   }
@@ -174,21 +250,85 @@ bool EvaluatedView::fit_to_screen(
     border_segments_ = std::move(borders);
     fine_curves_serial_ = coarse_curves_serial_ = UINT64_MAX;  // upload them again
     drawn_changed |=
-        follow_curves(doc, fine_, fine_.synced_revision(), {}, gpu_fine_, fine_curves_serial_);
+        follow_curves(doc, *fine_, fine_->synced_revision(), {}, gpu_fine_, fine_curves_serial_);
   }
-  if (drawn_changed) gpu_fine_.update_geometry(fine_.draw());
-  if (coarse_changed) gpu_coarse_.update_geometry(coarse_.draw());
+  if (drawn_changed) gpu_fine_.update_meshes_and_curves(fine_->draw());
+  if (coarse_changed) gpu_coarse_.update_meshes_and_curves(coarse_->draw());
+  // The sizes the control net is thinned for: each edge's and each surface's on screen.
+  NetScreenSizes sizes;
+  sizes.edge_pixels = std::move(edge_pixels);
+  for (const SceneSurface& s : fine_->surfaces().surfaces) {
+    const Sphere sphere = bounding_sphere(s.evaluator->patch());
+    sizes.surface_pixels.push_back(pixels(sphere.centre, sphere.radius));
+  }
+  // A small zoom keeps the thinning when no object crosses its threshold ... so compare the
+  // decisions, not the sizes: thinning is recomputed when any size moved by 10 %.
+  auto moved = [](const std::vector<double>& a, const std::vector<double>& b) {
+    if (a.size() != b.size()) return true;
+    for (std::size_t i = 0; i < a.size(); ++i)
+      if (std::abs(a[i] - b[i]) > 0.1 * std::max(a[i], b[i])) return true;
+    return false;
+  };
+  if (moved(sizes.edge_pixels, net_sizes_.edge_pixels) ||
+      moved(sizes.surface_pixels, net_sizes_.surface_pixels)) {
+    net_sizes_ = std::move(sizes);
+    ++net_sizes_serial_;
+  }
   return drawn_changed;
 }
 
+void EvaluatedView::show_net(const NetFocus& focus, double point_px, const Document& doc) {
+  LiveSurfaces& live = coarse_shown_ ? *coarse_ : *fine_;
+  const NetKey key{&live, live.points_layout(), net_sizes_serial_, focus, point_px};
+  if (!(key == net_key_)) {
+    net_key_ = key;
+    thinning_ = thin_control_net(live.points(), live.surfaces(),
+                                 doc.scene().network ? &*doc.scene().network : nullptr, net_sizes_,
+                                 focus, point_px);
+    live.set_hidden_points(thinning_.hidden);
+    ++net_serial_;
+  }
+  upload_net(live, coarse_shown_ ? gpu_coarse_ : gpu_fine_,
+             coarse_shown_ ? coarse_net_key_ : fine_net_key_);
+}
+
+void EvaluatedView::upload_net(const LiveSurfaces& live, GpuScene& gpu, uint64_t& key) {
+  // The points move with every sync (revision) and the hidden ones with every thinning.
+  const uint64_t k = live.synced_revision() * 0x9E3779B97F4A7C15ull ^ net_serial_ << 1 ^
+                     live.points_layout() << 40;
+  if (k == key) return;
+  key = k;
+  const ScenePoints& pts = live.points();
+  make_control_net(pts, true, net_scratch_);
+  arrows_scratch_.clear();
+  for (std::size_t a = 0; a < pts.arrows.size(); ++a)
+    if (pts.shown(pts.arrow_base[a])) arrows_scratch_.push_back(pts.arrows[a]);
+  gpu.set_net(net_scratch_, arrows_scratch_);
+}
+
 std::string EvaluatedView::density_note() const {
-  const std::vector<int> d = fine_.densities();
+  const std::vector<int> d = fine_->densities();
   if (d.empty()) return {};
   const auto [lo, hi] = std::minmax_element(d.begin(), d.end());
   char buf[160];
   std::snprintf(buf, sizeof buf, "face densities %d-%d, %zu k of %zu k triangles", *lo, *hi,
-                triangles_of(fine_) / 1000, fine_budget_.triangles / 1000);
+                triangles_of(*fine_) / 1000, fine_budget_.triangles / 1000);
   return buf;
+}
+
+std::string EvaluatedView::drawing_note() const {
+  const std::vector<int> d = fine_->densities();
+  std::string note;
+  if (std::any_of(d.begin(), d.end(), [&](int x) { return x < fine_budget_.max_density; })) {
+    const auto [lo, hi] = std::minmax_element(d.begin(), d.end());
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "densities %d-%d for size on screen (%zu k of %zu k triangles)",
+                  *lo, *hi, triangles_of(*fine_) / 1000, fine_budget_.triangles / 1000);
+    note = buf;
+  }
+  const std::string net = net_note();
+  if (!net.empty()) note += (note.empty() ? "" : "; ") + net;
+  return note;
 }
 
 }  // namespace pl

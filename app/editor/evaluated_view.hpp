@@ -14,12 +14,14 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "app/document/document.hpp"
 #include "app/editor/logic/live_curves.hpp"
 #include "app/editor/logic/live_surfaces.hpp"
+#include "app/editor/logic/net_thinning.hpp"
 #include "core/eval/density_choice.hpp"
 #include "render/display_settings.hpp"
 #include "render/gpu_scene.hpp"
@@ -31,12 +33,39 @@ struct ViewBudgets {
   std::size_t coarse_triangles = 120000;  // drawn while dragging: the frame rate's share
 };
 
+// What a view evaluates, GL-free: built on a worker thread while the window shows a progress
+// bar, then handed to EvaluatedView on the thread that owns the GL context.
+struct ViewEvaluation {
+  std::optional<FaceScheme> scheme;
+  DensityBudget fine_budget, coarse_budget;
+  std::unique_ptr<LiveSurfaces> coarse, fine;
+  std::unique_ptr<LiveCurves> curves;
+  uint64_t revision = 0;
+};
+
+struct ViewRequest {
+  std::optional<FaceScheme> scheme;  // none: the scene's own
+  int coarse_density = 16, fine_density = 48;
+  bool combs = false;
+  int comb_teeth = DisplaySettings().comb_teeth;
+  ViewBudgets budgets;
+};
+
+// Called with the fraction of the work done (0 to 1) and what is being done.
+using ViewProgress = std::function<void(double fraction, const char* stage)>;
+
+// Evaluates `scene` (document revision `revision`, named `source` in messages) for a view:
+// fills the network, evaluates every surface at both densities and samples the borders.
+// Throws DataError when the scene cannot be evaluated.
+ViewEvaluation evaluate_view(const Scene& scene, uint64_t revision, const std::string& source,
+                             const ViewRequest& request, const ViewProgress& progress = {});
+
 class EvaluatedView {
  public:
-  // Throws DataError when the scene cannot be evaluated. combs, comb_teeth: as configure_combs.
-  EvaluatedView(const Document& doc, std::optional<FaceScheme> scheme, int coarse_density,
-                int fine_density, bool combs = false, int comb_teeth = DisplaySettings().comb_teeth,
-                ViewBudgets budgets = {});
+  // Uploads an evaluation (needs the GL context).
+  explicit EvaluatedView(ViewEvaluation evaluation);
+  // Evaluates and uploads at once. Throws DataError when the scene cannot be evaluated.
+  EvaluatedView(const Document& doc, const ViewRequest& request);
 
   // Follows the document; returns true when what is drawn changed. Throws DataError when the
   // edited network cannot be filled (the view keeps its last state).
@@ -50,17 +79,28 @@ class EvaluatedView {
                      const Document& doc);
   // "face densities 6-24, 412 k of 600 k triangles": for the status bar.
   std::string density_note() const;
+  // For the status bar, when drawing is the limit: the face densities when some face is drawn
+  // below the highest density, and what the control net's thinning hides; empty otherwise.
+  std::string drawing_note() const;
+
+  // Which control points are drawn and picked: those readable at their size on screen (from
+  // the last fit_to_screen; net_thinning.hpp) and, whatever their size, those of `focus`.
+  // point_px: a drawn point's width in pixels. Uploads the net when it or the points changed;
+  // cheap otherwise.
+  void show_net(const NetFocus& focus, double point_px, const Document& doc);
+  // What show_net hides, for the status bar; empty when nothing is.
+  std::string net_note() const { return thinning_.note(); }
 
   // Curvature combs on or off and their tooth count: applied by the next follow(), which
   // resamples the curves of the surfaces shown without re-evaluating them (no comb work while
   // combs are off).
-  void configure_combs(bool combs, int teeth) { curves_.configure(combs, teeth); }
+  void configure_combs(bool combs, int teeth) { curves_->configure(combs, teeth); }
 
-  const LiveSurfaces& shown() const { return coarse_shown_ ? coarse_ : fine_; }
+  const LiveSurfaces& shown() const { return coarse_shown_ ? *coarse_ : *fine_; }
   const GpuScene& gpu() const { return coarse_shown_ ? gpu_coarse_ : gpu_fine_; }
-  const LiveSurfaces& fine() const { return fine_; }
-  const LiveSurfaces& coarse() const { return coarse_; }
-  const LiveCurves& curves() const { return curves_; }
+  const LiveSurfaces& fine() const { return *fine_; }
+  const LiveSurfaces& coarse() const { return *coarse_; }
+  const LiveCurves& curves() const { return *curves_; }
   bool settled() const { return !coarse_shown_; }
   std::optional<FaceScheme> scheme() const { return scheme_; }
   double last_eval_ms() const { return last_eval_ms_; }
@@ -74,18 +114,36 @@ class EvaluatedView {
   // The border polylines uploaded: LiveCurves' own, or every k-th point of one (a border a few
   // pixels long on screen needs a few segments, not 64).
   std::vector<const CurvatureComb*> drawn_borders();
+  // Uploads the shown points of `live` to `gpu` unless `key` says it holds them already.
+  void upload_net(const LiveSurfaces& live, GpuScene& gpu, uint64_t& key);
 
   std::optional<FaceScheme> scheme_;
   DensityBudget fine_budget_, coarse_budget_;
+  // Whether each view's densities were chosen from sizes on screen yet (they start uniform).
+  bool fine_fitted_ = false, coarse_fitted_ = false;
   std::vector<int> border_segments_;  // per surface, from the last fit_to_screen
   std::vector<CurvatureComb> thin_borders_;
-  LiveSurfaces coarse_, fine_;  // coarse first: its surfaces size the fine view's budget
-  LiveCurves curves_;
+  std::unique_ptr<LiveSurfaces> coarse_, fine_;
+  std::unique_ptr<LiveCurves> curves_;
   GpuScene gpu_fine_, gpu_coarse_;
   uint64_t fine_revision_, coarse_revision_;
   uint64_t fine_curves_serial_ = UINT64_MAX, coarse_curves_serial_ = UINT64_MAX;
   bool coarse_shown_ = false;
   double last_eval_ms_ = 0;
+  // Control-net thinning: the sizes it used, what it was computed for, and the uploads.
+  NetScreenSizes net_sizes_;
+  uint64_t net_sizes_serial_ = 0, net_serial_ = 0;
+  struct NetKey {
+    const LiveSurfaces* live = nullptr;
+    uint64_t layout = UINT64_MAX, sizes = UINT64_MAX;
+    NetFocus focus;
+    double point_px = 0;
+    bool operator==(const NetKey&) const = default;
+  } net_key_;
+  NetThinning thinning_;
+  uint64_t fine_net_key_ = UINT64_MAX, coarse_net_key_ = UINT64_MAX;
+  ControlNet net_scratch_;
+  std::vector<Arrow> arrows_scratch_;
 };
 
 }  // namespace pl

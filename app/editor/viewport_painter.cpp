@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
 
 #include "app/editor/logic/selection_properties.hpp"
@@ -190,6 +191,28 @@ void ViewportPainter::draw_panel_gl(const ViewportFrame& f, int panel, const Col
   glDisable(GL_SCISSOR_TEST);
 }
 
+void ViewportPainter::draw_progress(const ViewportFrame& f) {
+  // A small opaque panel in the middle of the view: what is being done and how far it is.
+  const float s = f.ui_scale;
+  const ViewRect& r = f.viewport;
+  const float w = float(std::min(420.0 * s, 0.8 * r.width));
+  ImGui::SetNextWindowPos(ImVec2(float(r.x + r.width / 2), float(r.y + r.height / 2)),
+                          ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSize(ImVec2(w, 0));
+  ImGui::Begin("##loading", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoFocusOnAppearing |
+                   ImGuiWindowFlags_NoNav);
+  const std::string& name = f.title;
+  ImGui::TextUnformatted(("Opening " + name).c_str());
+  const double fraction = f.views->load_fraction();
+  char overlay[96];
+  std::snprintf(overlay, sizeof overlay, "%.0f %%", 100 * fraction);
+  ImGui::ProgressBar(float(fraction), ImVec2(-1, 0), overlay);
+  ImGui::TextDisabled("%s ...", f.views->load_stage().c_str());
+  ImGui::End();
+}
+
 void ViewportPainter::paint(const ViewportFrame& f, const ColorRange& range) {
   int fbw = 0, fbh = 0;
   glfwGetFramebufferSize(f.window, &fbw, &fbh);
@@ -198,6 +221,10 @@ void ViewportPainter::paint(const ViewportFrame& f, const ColorRange& range) {
   glClearColor(0.155f, 0.160f, 0.175f, 1.0f);
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  if (f.views->loading()) {
+    draw_progress(f);
+    return;
+  }
   if (!f.views->ready()) {
     draw_error_text(f.viewport, "Cannot show this scene:\n" + f.views->error());
     return;

@@ -9,6 +9,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "app/editor/logic/continuity_monitor.hpp"
@@ -41,6 +42,7 @@ struct ViewportFrame {
   const PickResult* hover = nullptr;  // what lies under the cursor there
   const std::optional<ProbeHit>* probe = nullptr;
   float ui_scale = 1;
+  std::string title;  // the document's name, for the progress panel
 };
 
 class ViewportPainter {
@@ -57,6 +59,8 @@ class ViewportPainter {
     int hovered_surface = -1;
   };
   void update_guides(const ViewportFrame& f, int panel);
+  // While the scene is evaluated behind it: a panel with a progress bar.
+  void draw_progress(const ViewportFrame& f);
   void draw_panel_gl(const ViewportFrame& f, int panel, const ColorRange& range,
                      const DisplaySettings& display);
   std::array<PanelGuides, 2> guides_;

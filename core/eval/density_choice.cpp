@@ -42,8 +42,8 @@ std::vector<int> choose_densities(std::span<const SurfaceSize> sizes, const Dens
   for (std::size_t i = 0; i < sizes.size(); ++i) {
     const double need = sizes[i].pixels / b.pixels_per_segment;
     int l = 0;
-    while (l < coarsest && levels[l + 1] >= need) ++l;    // the coarsest level that is enough
-    if (l > 0 && sizes[i].density == levels[l - 1]) --l;  // already one finer: keep it
+    while (l < coarsest && levels[l + 1] >= need) ++l;  // the coarsest level that is enough
+    if (l > 0 && sizes[i].fitted && sizes[i].density == levels[l - 1]) --l;  // keep one finer
     level[i] = l;
   }
   const auto total = [&] {

@@ -38,12 +38,16 @@ struct SurfaceSize {
   double pixels = 0;          // the surface's diameter on screen
   std::size_t triangles = 0;  // its triangles at `density`
   int density = 1;            // (a surface's triangles grow as density^2)
+  // Whether `density` was chosen from the surface's size on screen (by an earlier choice): only
+  // then is one level finer than needed kept. A density set otherwise (a view's uniform start)
+  // goes to what the size asks for.
+  bool fitted = true;
 };
 
 // One density per surface: the level that gives a sample every pixels_per_segment pixels across
 // its diameter, lowered level by level for the largest surfaces first while the total exceeds the
-// budget. A surface whose density is already one level finer than it needs keeps it when the
-// budget allows (no re-evaluation for a small zoom).
+// budget. A surface whose fitted density is already one level finer than it needs keeps it when
+// the budget allows (no re-evaluation for a small zoom).
 std::vector<int> choose_densities(std::span<const SurfaceSize> sizes, const DensityBudget& budget);
 
 // The highest level at which every surface fits the budget at one density.

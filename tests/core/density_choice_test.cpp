@@ -48,6 +48,9 @@ TEST(DensityChoice, ASurfaceOneLevelFinerThanNeededKeepsItsDensity) {
   // Two levels finer than needed: it comes down.
   sizes[0].pixels = 30;  // asks for 6
   EXPECT_EQ(choose_densities(sizes, budget)[0], 6);
+  // A density not chosen from the size (a uniform start) goes to what the size asks for.
+  sizes[0] = {100, 2 * 48 * 48, 48, false};
+  EXPECT_EQ(choose_densities(sizes, budget)[0], 24);
 }
 
 TEST(DensityChoice, UniformDensityFitsTheBudget) {

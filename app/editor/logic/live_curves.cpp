@@ -1,5 +1,6 @@
 #include "app/editor/logic/live_curves.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -26,20 +27,51 @@ void LiveCurves::configure(bool combs, int teeth) {
   stale_ = true;
 }
 
+namespace {
+
+// A network face's sides as its edges' polylines, per domain side; empty when the topology does
+// not describe the face.
+std::vector<CurvatureComb> face_edge_borders(const Network& net, const NetworkTopology& topology,
+                                             const SceneSurface& s) {
+  if (s.face < 0 || s.face >= int(topology.face_sides.size())) return {};
+  const auto& sides = topology.face_sides[s.face];
+  const int n = s.evaluator->patch().domain().side_count();
+  if (sides.size() != s.patch_side.size() || int(sides.size()) != n) return {};
+  std::vector<CurvatureComb> borders(n);
+  for (std::size_t i = 0; i < sides.size(); ++i) {
+    const int d = s.patch_side[i], e = sides[i].edge;
+    if (d < 0 || d >= n || e < 0 || e >= int(net.edges.size()) || !borders[d].points.empty())
+      return {};
+    borders[d].points = edge_polyline(net, e);
+    if (sides[i].reversed) std::reverse(borders[d].points.begin(), borders[d].points.end());
+  }
+  return borders;
+}
+
+}  // namespace
+
 bool LiveCurves::follow(const Scene& scene, const SceneSurfaces& surfaces, uint64_t from,
-                        uint64_t to, const std::vector<int>& changed) {
+                        uint64_t to, const std::vector<int>& changed,
+                        const NetworkTopology* topology) {
   const std::size_t n = surfaces.surfaces.size();
   const int teeth = combs_ ? teeth_ : 0;
+  auto surface_borders = [&](const SceneSurface& s) {
+    if (teeth == 0 && topology && scene.network && s.face >= 0) {
+      std::vector<CurvatureComb> b = face_edge_borders(*scene.network, *topology, s);
+      if (!b.empty()) return b;
+    }
+    return pl::surface_borders(s, teeth);
+  };
   if (!stale_ && revision_ == to) return false;  // e.g. the fine view catching up after a drag
   if (stale_ || revision_ != from || borders_.size() != n) {
     borders_.clear();
     on_network_.clear();
     for (const SceneSurface& s : surfaces.surfaces) {
-      borders_.push_back(surface_borders(s, teeth));
+      borders_.push_back(surface_borders(s));
       on_network_.push_back(s.face >= 0);
     }
   } else {
-    for (int i : changed) borders_.at(i) = surface_borders(surfaces.surfaces[i], teeth);
+    for (int i : changed) borders_.at(i) = surface_borders(surfaces.surfaces[i]);
   }
   // Network combs: a few hundred Bezier evaluations, recomputed whole.
   network_combs_.clear();

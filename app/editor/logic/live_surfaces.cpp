@@ -9,12 +9,6 @@ namespace pl {
 
 namespace {
 
-// The points collect_scene_points lists for a surface after the network's: every point of an
-// explicit patch, the derived (non-boundary) points of a face.
-bool own_point(const SceneSurface& s, std::size_t k) {
-  return s.face < 0 || s.evaluator->patch().kind(k) != ControlPointKind::Boundary;
-}
-
 std::array<Vec3, 4> edge_points(const Network& net, int e) {
   const NetworkEdge& ed = net.edges[e];
   return {net.vertices[ed.v[0]], ed.handles[0], ed.handles[1], net.vertices[ed.v[1]]};
@@ -41,7 +35,9 @@ int LiveSurfaces::segments_of(std::size_t edge) const {
 }
 
 void LiveSurfaces::rebuild_overlays(const Scene& scene) {
+  draw_.closed_orientation = closed_orientation(scene, evaluation_.surfaces(), draw_.surfaces);
   points_ = collect_scene_points(scene, evaluation_.surfaces());
+  ++points_layout_;
   fill_overlays(scene, points_, draw_);
   if (scene.network && curve_segments_.size() != scene.network->edges.size())
     curve_segments_.clear();  // new edges: every curve at full resolution until chosen again
@@ -49,62 +45,48 @@ void LiveSurfaces::rebuild_overlays(const Scene& scene) {
     for (std::size_t e = 0; e < curve_segments_.size(); ++e)
       if (curve_segments_[e] != kCurveSegments)
         draw_.network_curves[e] = edge_polyline(*scene.network, int(e), curve_segments_[e]);
-  // The layout of collect_scene_points: vertices, two handles per edge, then each surface's own
-  // points in surface order.
-  std::size_t at = 0;
   edge_points_.clear();
-  if (scene.network) {
-    at = scene.network->vertices.size() + 2 * scene.network->edges.size();
+  if (scene.network)
     for (std::size_t e = 0; e < scene.network->edges.size(); ++e)
       edge_points_.push_back(edge_points(*scene.network, int(e)));
-  }
-  surface_points_.clear();
-  for (const SceneSurface& s : evaluation_.surfaces().surfaces) {
-    std::size_t count = 0;
-    for (std::size_t k = 0; k < s.evaluator->patch().size(); ++k) count += own_point(s, k);
-    surface_points_.emplace_back(at, count);
-    at += count;
-  }
-  if (at != points_.positions.size()) surface_points_.clear();  // an unknown layout
 }
 
 bool LiveSurfaces::update_overlays(const Scene& scene, const std::vector<int>& changed) {
   const std::size_t vertices = scene.network ? scene.network->vertices.size() : 0;
   const std::size_t edges = scene.network ? scene.network->edges.size() : 0;
-  if (surface_points_.size() != surfaces().surfaces.size() || edge_points_.size() != edges ||
-      draw_.network_curves.size() != edges || draw_.net.points.size() != points_.positions.size())
+  const auto& surfaces = this->surfaces().surfaces;
+  if (points_.face_group.size() != surfaces.size() ||
+      points_.patch_group.size() != scene.patches.size() || edge_points_.size() != edges ||
+      draw_.network_curves.size() != edges || vertices + 2 * edges > points_.positions.size())
     return false;
-  const auto set = [&](std::size_t i, const Vec3& p) {
-    points_.positions[i] = p;
-    draw_.net.points[i] = p;
-  };
   if (scene.network) {
     const Network& net = *scene.network;
-    if (vertices + 2 * edges > points_.positions.size()) return false;
     for (std::size_t e = 0; e < edges; ++e) {
       const std::array<Vec3, 4> p = edge_points(net, int(e));
       if (p == edge_points_[e]) continue;  // O(E) comparisons; curves only where they moved
       edge_points_[e] = p;
       draw_.network_curves[e] = edge_polyline(net, int(e), segments_of(e));
-      set(net.edges[e].v[0], p[0]);
-      set(vertices + 2 * e, p[1]);
-      set(vertices + 2 * e + 1, p[2]);
-      set(net.edges[e].v[1], p[3]);
+      points_.positions[net.edges[e].v[0]] = p[0];
+      points_.positions[vertices + 2 * e] = p[1];
+      points_.positions[vertices + 2 * e + 1] = p[2];
+      points_.positions[net.edges[e].v[1]] = p[3];
     }
     for (std::size_t v = 0; v < vertices; ++v)  // vertices on no edge
-      if (points_.positions[v] != net.vertices[v]) set(v, net.vertices[v]);
+      points_.positions[v] = net.vertices[v];
   }
   for (int i : changed) {
-    const SceneSurface& s = surfaces().surfaces[i];
-    auto [at, count] = surface_points_[i];
-    std::size_t n = 0;
-    for (std::size_t k = 0; k < s.evaluator->patch().size(); ++k)
-      if (own_point(s, k)) {
-        if (n++ == count) return false;
-        set(at++, s.evaluator->patch().control_point(k));
-      }
-    if (n != count) return false;
+    const SceneSurface& s = surfaces[i];
+    if (s.face >= 0) {
+      const int g = points_.face_group[i];
+      if (g < 0 || !update_group(points_, std::size_t(g), s.evaluator->patch())) return false;
+    } else if (s.patch >= 0 && s.patch < int(scene.patches.size())) {
+      if (!update_group(points_, std::size_t(points_.patch_group[s.patch]),
+                        *scene.patches[s.patch].patch))
+        return false;
+    }
   }
+  draw_.net.points = points_.positions;
+  draw_.arrows = points_.arrows;
   return true;
 }
 

@@ -48,6 +48,10 @@ class LiveSurfaces {
   const SceneEvaluation& evaluation() const { return evaluation_; }
   const DrawScene& draw() const { return draw_; }
   const ScenePoints& points() const { return points_; }
+  // Changes whenever the points are listed again (their indices may mean other points).
+  uint64_t points_layout() const { return points_layout_; }
+  // Which points are left out of the drawing and the picking (net_thinning.hpp); empty: none.
+  void set_hidden_points(std::vector<uint8_t> hidden) { points_.hidden = std::move(hidden); }
   double last_sync_ms() const { return last_sync_ms_; }
   std::size_t sample_count() const;
 
@@ -62,12 +66,11 @@ class LiveSurfaces {
   SceneEvaluation evaluation_;
   DrawScene draw_;
   ScenePoints points_;
-  // Where each surface's own points start in points_ and how many there are (the derived
-  // points of a face, every point of an explicit patch), and every edge's drawn control points.
-  std::vector<std::pair<std::size_t, std::size_t>> surface_points_;
+  // Every edge's control points as last drawn.
   std::vector<std::array<Vec3, 4>> edge_points_;
   std::vector<int> curve_segments_;  // per edge, or empty: all kCurveSegments
   uint64_t revision_ = 0;
+  uint64_t points_layout_ = 0;
   double last_sync_ms_ = 0;
 };
 

@@ -109,6 +109,7 @@ PickResult ScenePicker::pick(const PickScene& scene, const Camera& camera, const
     // keeps the best of each kind.
     NearestPoint in_front, behind, derived;
     for (std::size_t i = 0; i < pts.positions.size(); ++i) {
+      if (!pts.shown(i)) continue;  // left out of the drawing where too dense
       const Vec3& p = pts.positions[i];
       if (!camera.orthographic && !near_ray(p, options.point_radius_px)) continue;
       const auto s = project(p);

@@ -1,7 +1,15 @@
 // Every control point the editor shows, with the PointRef of those a user may move (network
 // vertices, edge handles, explicit patch points) and none for derived points (Gregory twins, GB
-// ribbon and central points of network faces), plus the control-net segments and curves drawn
-// over the surfaces. GUI-free: picking and drawing both read this one list.
+// ribbon and central points of network faces), the control-net segments of every patch family
+// (core/patch/control_net_topology.hpp: GB rows and spokes, Gregory twins, spline grids, the
+// Catmull–Clark cage, ...) and the derivative data of explicit patches (Hermite tangents and
+// twists, Coons network derivatives) as arrows, never as points. GUI-free: picking and drawing
+// both read this one list.
+//
+// Layout: the network's vertices, then two handles per edge, then one group per explicit scene
+// patch and one per network face (its derived points; its boundary points are the network's
+// own where they coincide exactly). Groups let an edit refresh the points of the surfaces it
+// changed only (update_group).
 #pragma once
 
 #include <optional>
@@ -13,11 +21,41 @@
 
 namespace pl {
 
+// Whose a point is: a network vertex, an edge (its handles), an explicit scene patch or a
+// network face (by surface index).
+struct PointOwner {
+  enum class Kind : uint8_t { Vertex, Edge, Patch, Face };
+  Kind kind = Kind::Vertex;
+  int index = -1;
+  bool operator==(const PointOwner&) const = default;
+};
+
 struct ScenePoints {
   std::vector<Vec3> positions;
   std::vector<ControlPointKind> kinds;
   std::vector<std::optional<PointRef>> refs;  // nullopt: derived, shown but not editable
-  std::vector<std::array<uint32_t, 2>> segments;
+  std::vector<PointOwner> owners;
+  std::vector<std::array<uint32_t, 2>> segments;  // each pair once
+  std::vector<Arrow> arrows;                      // derivative vectors of explicit patches
+  std::vector<uint32_t> arrow_base;               // per arrow: the point it starts at
+
+  // The points of one explicit patch or network face: positions [first, first + ks.size()) are
+  // its control points ks (vectors excluded), arrows [first_arrow, ...) its derivative arrows.
+  struct Group {
+    PointOwner owner;
+    std::size_t first = 0;
+    std::vector<uint32_t> ks;
+    std::size_t first_arrow = 0;
+    std::vector<DerivativeArrow> arrow_data;
+  };
+  std::vector<Group> groups;
+  std::vector<int> face_group;   // per surface: its group, or -1 (explicit pieces)
+  std::vector<int> patch_group;  // per scene patch: its group
+
+  // Points left out of the drawing where they would cover the surface (net_thinning.hpp): not
+  // drawn and not picked. Empty: every point is shown.
+  std::vector<uint8_t> hidden;
+  bool shown(std::size_t i) const { return hidden.empty() || !hidden[i]; }
 
   std::vector<bool> editable() const;
   int find(const PointRef& ref) const;  // index of ref, or -1
@@ -25,8 +63,17 @@ struct ScenePoints {
 
 ScenePoints collect_scene_points(const Scene& scene, const SceneSurfaces& surfaces);
 
-// The overlays of a DrawScene from the points: the net and the network curves. Borders and
-// curvature combs are LiveCurves'.
+// Refreshes group g's positions and arrows from `patch` (the same patch type and size as when
+// collected). Returns false when the patch no longer matches the group.
+bool update_group(ScenePoints& points, std::size_t g, const Patch& patch);
+
+// The net the renderer draws from the points: every point with its kind and role (derived where
+// there is no ref), the segments and the arrows; with `only_shown`, the shown points only (and
+// the segments between them). `out` keeps its capacity.
+void make_control_net(const ScenePoints& points, bool only_shown, ControlNet& out);
+
+// The overlays of a DrawScene from the points: the net, the arrows and the network curves.
+// Borders and curvature combs are LiveCurves'.
 void fill_overlays(const Scene& scene, const ScenePoints& points, DrawScene& draw);
 
 }  // namespace pl
