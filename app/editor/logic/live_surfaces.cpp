@@ -65,6 +65,10 @@ void LiveSurfaces::rebuild_overlays(const Scene& scene) {
     surface_points_.emplace_back(at, count);
     at += count;
   }
+  // Then the free curves' points, curve after curve.
+  curve_points_at_ = at;
+  for (const SceneCurve& c : scene.curves) at += c.points.size();
+  free_lines_.rebuild(scene.curves, draw_.free_curves);
   if (at != points_.positions.size()) surface_points_.clear();  // an unknown layout
 }
 
@@ -105,7 +109,15 @@ bool LiveSurfaces::update_overlays(const Scene& scene, const std::vector<int>& c
       }
     if (n != count) return false;
   }
-  return true;
+  if (!free_lines_.update(scene.curves, draw_.free_curves)) return false;
+  std::size_t at = curve_points_at_;
+  for (const SceneCurve& c : scene.curves)
+    for (const Vec3& p : c.points) {
+      if (at >= points_.positions.size()) return false;
+      if (points_.positions[at] != p) set(at, p);
+      ++at;
+    }
+  return at == points_.positions.size();
 }
 
 void LiveSurfaces::update_meshes(const SyncStats& stats) {
