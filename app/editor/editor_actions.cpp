@@ -6,6 +6,7 @@
 #include "app/editor/editor.hpp"
 #include "app/editor/logic/add_vertex_tool.hpp"
 #include "app/editor/logic/authoring_actions.hpp"
+#include "app/editor/logic/curve_actions.hpp"
 #include "app/editor/logic/make_face_tool.hpp"
 #include "app/editor/logic/selection_actions.hpp"
 #include "app/editor/logic/selection_properties.hpp"
@@ -130,6 +131,14 @@ void Editor::register_actions() {
   };
   r.add(std::move(vertex_here));
   add_authoring_actions(r, session_.doc(), selection_, hooks);
+  CurveActionHooks curve_hooks;
+  curve_hooks.say = say;
+  // A right-click menu acts where it was opened: on a point there, else on the work plane.
+  curve_hooks.menu_point = [this]() -> std::optional<Vec3> {
+    if (!context_) return std::nullopt;
+    return mouse_.pressed_point ? mouse_.pressed_point : mouse_.pressed_placement;
+  };
+  add_curve_actions(r, session_.doc(), selection_, curve_hooks);
   Action rename = make_action("edit.rename", "Edit", "Rename...", {"F2"},
                               "name the selected face or edge", [this] { start_rename(); });
   rename.context = context_bit(ContextTarget::Face) | context_bit(ContextTarget::Edge);
