@@ -15,6 +15,7 @@
 #include "app/editor/logic/add_vertex_tool.hpp"
 #include "app/editor/logic/editor_paths.hpp"
 #include "app/editor/logic/make_face_tool.hpp"
+#include "app/editor/logic/new_curve_tool.hpp"
 #include "app/editor/logic/select_tool.hpp"
 #include "app/editor/logic/split_edge_tool.hpp"
 #include "app/editor/side_panel.hpp"
@@ -54,6 +55,7 @@ Editor::Editor(GlWindow& window, EditorOptions options, DocumentSession session)
   tools_.add(std::make_unique<AddEdgeTool>());
   tools_.add(std::make_unique<MakeFaceTool>());
   tools_.add(std::make_unique<SplitEdgeTool>());
+  tools_.add(std::make_unique<NewCurveTool>());
   register_actions();
   // A key given to two commands is a programmer's error: refuse to start (the end-to-end tests
   // start the editor, so they catch it).
