@@ -10,9 +10,11 @@
 #include <imgui.h>
 
 #include "app/editor/action_menus.hpp"
+#include "app/editor/curvature_graph_window.hpp"
 #include "app/editor/editor_windows.hpp"
 #include "app/editor/logic/add_edge_tool.hpp"
 #include "app/editor/logic/add_vertex_tool.hpp"
+#include "app/editor/logic/curve_actions.hpp"
 #include "app/editor/logic/editor_paths.hpp"
 #include "app/editor/logic/make_face_tool.hpp"
 #include "app/editor/logic/new_curve_tool.hpp"
@@ -213,6 +215,9 @@ void Editor::draw_interface(const ColorRange& range) {
                       ui_scale_);
   }
   if (show_help_) draw_help_window(&show_help_, actions_, ui_scale_);
+  if (show_curvature_graph_)
+    draw_curvature_graph_window(&show_curvature_graph_, session_.doc().scene(),
+                                selected_curve(session_.doc().scene(), selection_), ui_scale_);
   draw_rename();
   if (context_) {
     MenuItemProbe probe;

@@ -176,6 +176,7 @@ class Editor {
   std::vector<std::string> dropped_;
   bool quit_ = false;
   bool show_help_ = false;
+  bool show_curvature_graph_ = false;
   int frames_ = 0;
   std::string shown_title_;
   float ui_scale_ = 1;

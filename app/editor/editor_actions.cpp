@@ -139,6 +139,12 @@ void Editor::register_actions() {
     return mouse_.pressed_point ? mouse_.pressed_point : mouse_.pressed_placement;
   };
   add_curve_actions(r, session_.doc(), selection_, curve_hooks);
+  Action graph = make_action("curve.curvature_graph", "Curve", "Curvature Graph", {},
+                             "curvature against t of the selected curve, in a window",
+                             [this] { show_curvature_graph_ = !show_curvature_graph_; });
+  graph.separator_before = true;
+  graph.checked = [this] { return show_curvature_graph_; };
+  r.add(std::move(graph));
   Action rename = make_action("edit.rename", "Edit", "Rename...", {"F2"},
                               "name the selected face or edge", [this] { start_rename(); });
   rename.context = context_bit(ContextTarget::Face) | context_bit(ContextTarget::Edge);
