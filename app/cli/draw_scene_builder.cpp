@@ -81,11 +81,14 @@ std::vector<CurvatureComb> surface_borders(const SceneSurface& surface, int comb
   return borders;
 }
 
+int free_curve_samples_per_span(const SceneCurve& c) {
+  return std::max(8, kCurveSegments / static_cast<int>(curve_spans(c).size()));
+}
+
 Polyline free_curve_polyline(const SceneCurve& c) {
-  const auto spans = curve_spans(c);
-  const int per_span = std::max(8, kCurveSegments / static_cast<int>(spans.size()));
   Polyline l;
-  for (double t : curve_sample_parameters(c, per_span)) l.push_back(evaluate(c, t).p);
+  for (double t : curve_sample_parameters(c, free_curve_samples_per_span(c)))
+    l.push_back(evaluate(c, t).p);
   return l;
 }
 

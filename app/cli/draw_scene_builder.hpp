@@ -48,6 +48,8 @@ std::vector<CurvatureComb> network_combs(const Network& network, int comb_teeth)
 
 // A free curve as drawn: every span sampled uniformly (at least kCurveSegments segments in all),
 // and its curvature comb, one comb per span (comb_teeth tooth intervals each).
+// The samples per span a free curve is drawn with (about kCurveSegments in all, 8 at least).
+int free_curve_samples_per_span(const SceneCurve& curve);
 Polyline free_curve_polyline(const SceneCurve& curve);
 std::vector<CurvatureComb> free_curve_combs(const SceneCurve& curve, int comb_teeth);
 // The curve, its comb (comb_teeth > 0) and its control polygon appended to d.

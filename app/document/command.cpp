@@ -40,7 +40,8 @@ void move_points(Scene& scene, const std::vector<PointRef>& refs,
       set_point_position(scene, refs[i], positions[i]);
   for (std::size_t i = 0; i < refs.size(); ++i) {
     const PointRef& r = refs[i];
-    if (r.kind == PointRef::Kind::PatchPoint) set_point_position(scene, r, positions[i]);
+    if (r.kind == PointRef::Kind::PatchPoint || r.kind == PointRef::Kind::CurvePoint)
+      set_point_position(scene, r, positions[i]);
     if (r.kind != PointRef::Kind::EdgeHandle) continue;
     Network& net = *scene.network;
     if (mode == HandleMode::RotatePlane) {

@@ -14,6 +14,9 @@ bool point_exists(const Scene& s, const PointRef& r) {
     case PointRef::Kind::PatchPoint:
       return r.object >= 0 && r.object < int(s.patches.size()) && r.index >= 0 &&
              r.index < int(s.patches[r.object].patch->size());
+    case PointRef::Kind::CurvePoint:
+      return r.object >= 0 && r.object < int(s.curves.size()) && r.index >= 0 &&
+             r.index < int(s.curves[r.object].points.size());
   }
   return false;
 }
@@ -27,6 +30,8 @@ Vec3 point_position(const Scene& s, const PointRef& r) {
       return s.network->edges[r.object].handles[r.index];
     case PointRef::Kind::PatchPoint:
       return s.patches[r.object].patch->control_point(r.index);
+    case PointRef::Kind::CurvePoint:
+      return s.curves[r.object].points[r.index];
   }
   return Vec3(0);
 }
@@ -55,6 +60,10 @@ void set_point_position(Scene& s, const PointRef& r, const Vec3& p) {
       slot = std::move(copy);
       break;
     }
+    case PointRef::Kind::CurvePoint:
+      // Any position keeps a curve valid (weights and knots are untouched).
+      s.curves[r.object].points[r.index] = p;
+      break;
   }
 }
 
@@ -66,6 +75,8 @@ std::string describe(const PointRef& r) {
       return "edge " + std::to_string(r.object) + " handle " + std::to_string(r.index);
     case PointRef::Kind::PatchPoint:
       return "patch " + std::to_string(r.object) + " point " + std::to_string(r.index);
+    case PointRef::Kind::CurvePoint:
+      return "curve " + std::to_string(r.object) + " point " + std::to_string(r.index);
   }
   return "?";
 }

@@ -11,14 +11,16 @@
 namespace pl {
 
 struct PointRef {
-  enum class Kind : uint8_t { NetworkVertex, EdgeHandle, PatchPoint };
+  enum class Kind : uint8_t { NetworkVertex, EdgeHandle, PatchPoint, CurvePoint };
   Kind kind = Kind::NetworkVertex;
-  int object = -1;  // edge index (EdgeHandle), patch index (PatchPoint), unused for vertices
+  int object = -1;  // edge (EdgeHandle), patch (PatchPoint) or curve (CurvePoint) index
   int index = -1;   // vertex index, handle 0/1, or control point index
 
   static PointRef vertex(int v) { return {Kind::NetworkVertex, -1, v}; }
   static PointRef handle(int edge, int which) { return {Kind::EdgeHandle, edge, which}; }
   static PointRef patch_point(int patch, int k) { return {Kind::PatchPoint, patch, k}; }
+  // A control point of a free curve (scene.curves).
+  static PointRef curve_point(int curve, int k) { return {Kind::CurvePoint, curve, k}; }
   bool operator==(const PointRef&) const = default;
 };
 

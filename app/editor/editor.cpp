@@ -10,12 +10,15 @@
 #include <imgui.h>
 
 #include "app/editor/action_menus.hpp"
+#include "app/editor/curvature_graph_window.hpp"
 #include "app/editor/editor_windows.hpp"
 #include "app/editor/logic/add_edge_tool.hpp"
 #include "app/editor/logic/add_vertex_tool.hpp"
+#include "app/editor/logic/curve_actions.hpp"
 #include "app/editor/logic/editor_paths.hpp"
 #include "app/editor/logic/launch_time.hpp"
 #include "app/editor/logic/make_face_tool.hpp"
+#include "app/editor/logic/new_curve_tool.hpp"
 #include "app/editor/logic/select_tool.hpp"
 #include "app/editor/logic/split_edge_tool.hpp"
 #include "app/editor/side_panel.hpp"
@@ -49,6 +52,7 @@ Editor::Editor(GlWindow& window, EditorOptions options, DocumentSession session)
   tools_.add(std::make_unique<AddEdgeTool>());
   tools_.add(std::make_unique<MakeFaceTool>());
   tools_.add(std::make_unique<SplitEdgeTool>());
+  tools_.add(std::make_unique<NewCurveTool>());
   register_actions();
   // A key given to two commands is a programmer's error: refuse to start (the end-to-end tests
   // start the editor, so they catch it).
@@ -255,6 +259,9 @@ void Editor::draw_interface(const ColorRange& range) {
                       distance, ui_scale_);
   }
   if (show_help_) draw_help_window(&show_help_, actions_, help_key_, renderer_, ui_scale_);
+  if (show_curvature_graph_)
+    draw_curvature_graph_window(&show_curvature_graph_, session_.doc().scene(),
+                                selected_curve(session_.doc().scene(), selection_), ui_scale_);
   draw_rename();
   if (context_) {
     MenuItemProbe probe;

@@ -200,6 +200,7 @@ class Editor {
   std::vector<std::string> dropped_;
   bool quit_ = false;
   bool show_help_ = false;
+  bool show_curvature_graph_ = false;
   int frames_ = 0;
   int ready_frames_ = 0;  // frames since the views were last ready (a scene shown)
   // Since the process started: to the first frame swapped, and to the scene shown.

@@ -6,6 +6,7 @@
 #include "app/editor/editor.hpp"
 #include "app/editor/logic/add_vertex_tool.hpp"
 #include "app/editor/logic/authoring_actions.hpp"
+#include "app/editor/logic/curve_actions.hpp"
 #include "app/editor/logic/make_face_tool.hpp"
 #include "app/editor/logic/patch_actions.hpp"
 #include "app/editor/logic/selection_actions.hpp"
@@ -131,6 +132,22 @@ void Editor::register_actions() {
   r.add(std::move(vertex_here));
   add_authoring_actions(r, session_.doc(), selection_, hooks);
   add_patch_actions(r, session_.doc(), selection_, say);
+  CurveActionHooks curve_hooks;
+  curve_hooks.say = say;
+  // A right-click menu acts where it was opened: on a point there, else on the work plane.
+  curve_hooks.menu_point = [this]() -> std::optional<Vec3> {
+    if (!context_) return std::nullopt;
+    return mouse_.pressed_point ? mouse_.pressed_point : mouse_.pressed_placement;
+  };
+  add_curve_actions(r, session_.doc(), selection_, curve_hooks);
+  Action graph = make_action("curve.curvature_graph", "Curve", "Curvature Graph", {},
+                             "curvature against t of the selected curve, in a window",
+                             [this] { show_curvature_graph_ = !show_curvature_graph_; });
+  graph.separator_before = true;
+  graph.checked = [this] { return show_curvature_graph_; };
+  graph.context = context_bit(ContextTarget::Point) | context_bit(ContextTarget::Empty);
+  graph.enabled = [this] { return selected_curve(session_.doc().scene(), selection_).has_value(); };
+  r.add(std::move(graph));
   Action rename = make_action("edit.rename", "Edit", "Rename...", {"F2"},
                               "name the selected face or edge", [this] { start_rename(); });
   rename.context = context_bit(ContextTarget::Face) | context_bit(ContextTarget::Edge);

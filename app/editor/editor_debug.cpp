@@ -13,10 +13,11 @@
 //   status MESSAGE                               (every new status-bar message)
 //   text-input 1|0                               (a text field took or gave up the keyboard)
 // and, whenever it changed, the state at rest (no button held, no drag, fine surfaces shown):
-//   state revision R vertices V edges E faces F selected N can-undo U can-redo D tool NAME
+//   state revision R vertices V edges E faces F curves C selected N can-undo U can-redo D tool NAME
 //   view OX OY XX XY YX YY ZX ZY window WX WY    (pixels of the world origin and of the unit
 //                                                 points on x, y, z: affine in orthographic)
 //   vertex I X Y
+//   curve-point C K X Y                          (control point K of free curve C)
 //   edge I X Y | edge I hidden                   (a pixel that picks the edge's curve)
 //   face I X Y | face I hidden                   (a pixel that picks the face's surface)
 //   knob V X Y                                   (the normal knob of a selected vertex)
@@ -130,9 +131,9 @@ void Editor::report_state() {
   const Network& net = scene.network ? *scene.network : none;
   std::ostringstream out;
   out << "state revision " << doc.revision() << " vertices " << net.vertices.size() << " edges "
-      << net.edges.size() << " faces " << net.faces.size() << " selected " << selection_.size()
-      << " can-undo " << doc.can_undo() << " can-redo " << doc.can_redo() << " tool "
-      << tools_.active().name() << "\n";
+      << net.edges.size() << " faces " << net.faces.size() << " curves " << scene.curves.size()
+      << " selected " << selection_.size() << " can-undo " << doc.can_undo() << " can-redo "
+      << doc.can_redo() << " tool " << tools_.active().name() << "\n";
   int wx = 0, wy = 0;
   glfwGetWindowPos(window_.handle(), &wx, &wy);
   out << "view";
@@ -142,6 +143,10 @@ void Editor::report_state() {
   for (std::size_t v = 0; v < net.vertices.size(); ++v)
     out << "vertex " << v << " " << pixel(project_to_window(camera, rects[0], net.vertices[v]))
         << "\n";
+  for (std::size_t c = 0; c < scene.curves.size(); ++c)
+    for (std::size_t k = 0; k < scene.curves[c].points.size(); ++k)
+      out << "curve-point " << c << " " << k << " "
+          << pixel(project_to_window(camera, rects[0], scene.curves[c].points[k])) << "\n";
   std::vector<SelectionItem> items;
   const PickScene picks = pick_scene(0, items);
   const DisplaySettings& d = prefs_.display;

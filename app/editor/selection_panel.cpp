@@ -206,6 +206,8 @@ void draw_selection_section(const SidePanel& p) {
     coordinates(p, points);
     ImGui::TextDisabled("Drag in the view; hold X/Y/Z for an axis.");
     ImGui::TextDisabled("Arrows nudge (Shift x10, Alt x0.1).");
+    if (points[0].kind == PointRef::Kind::CurvePoint)
+      draw_curve_section(p, points[0].object, points[0].index);
   }
 }
 

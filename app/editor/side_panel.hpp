@@ -35,6 +35,8 @@ void draw_tools_section(const SidePanel& p);
 // The active tool's own fields below its hint (typed coordinates of a new vertex).
 void draw_tool_options(const SidePanel& p);
 void draw_selection_section(const SidePanel& p);
+// The free curve `curve` of the selected curve point `point` (in the Selection section).
+void draw_curve_section(const SidePanel& p, int curve, int point);
 // Returns true when the densities changed.
 bool draw_display_section(const SidePanel& p);
 void draw_work_plane_section(const SidePanel& p);

@@ -8,6 +8,7 @@
 #include "app/editor/logic/add_edge_tool.hpp"
 #include "app/editor/logic/add_vertex_tool.hpp"
 #include "app/editor/logic/make_face_tool.hpp"
+#include "app/editor/logic/new_curve_tool.hpp"
 #include "app/editor/side_panel.hpp"
 
 namespace pl {
@@ -31,6 +32,20 @@ void vertex_options(AddVertexTool& tool, ToolContext& ctx) {
   if (ImGui::Button(add)) tool.add_at(ctx, Vec3(xyz[0], xyz[1], xyz[2]));
 }
 
+// The type of the new curve (one radio button each) and the points clicked so far.
+void curve_options(NewCurveTool& tool, ToolContext& ctx) {
+  for (CurveType t : {CurveType::BSpline, CurveType::Nurbs, CurveType::Bezier,
+                      CurveType::Interpolating, CurveType::Hermite}) {
+    const std::string label(curve_type_name(t));
+    if (ImGui::RadioButton(label.c_str(), tool.type() == t)) tool.set_type(t);
+    if (t != CurveType::Bezier && t != CurveType::Hermite) ImGui::SameLine();
+  }
+  ImGui::Text("%zu points", tool.points().size());
+  ImGui::BeginDisabled(!tool.can_finish(ctx));
+  if (ImGui::Button("Make curve  (Enter)")) tool.finish(ctx);
+  ImGui::EndDisabled();
+}
+
 }  // namespace
 
 void draw_tool_options(const SidePanel& p) {
@@ -40,6 +55,7 @@ void draw_tool_options(const SidePanel& p) {
   if (auto* t = dynamic_cast<AddVertexTool*>(&tool)) vertex_options(*t, ctx);
   if (auto* t = dynamic_cast<AddEdgeTool*>(&tool); t && t->from() >= 0)
     ImGui::Text("next edge from vertex %d", t->from());
+  if (auto* t = dynamic_cast<NewCurveTool*>(&tool)) curve_options(*t, ctx);
   if (auto* t = dynamic_cast<MakeFaceTool*>(&tool)) {
     if (!t->vertices().empty()) ImGui::TextWrapped("vertices %s", list(t->vertices()).c_str());
     if (!t->edges().empty()) ImGui::TextWrapped("edges %s", list(t->edges()).c_str());

@@ -9,22 +9,10 @@
 #include "app/document/document.hpp"
 #include "cli_test_util.hpp"
 #include "core/io/scene_io.hpp"
+#include "curve_test_util.hpp"
 
 namespace pl::test {
 namespace {
-
-std::vector<Vec3> six_points() {
-  return {{0, 0, 0}, {1, 1, 0}, {2, 0, 0}, {3, 1, 0}, {4, 0, 0}, {5, 1, 0}};
-}
-
-double max_sample_difference(const SceneCurve& a, const SceneCurve& b) {
-  double worst = 0;
-  for (int i = 0; i < 1000; ++i) {
-    const double t = a.t_min() + (a.t_max() - a.t_min()) * i / 999.0;
-    worst = std::max(worst, glm::length(evaluate(a, t).p - evaluate(b, t).p));
-  }
-  return worst;
-}
 
 TEST(CurveCommands, BuildEditSaveAnalyze) {
   TempDir dir;

@@ -32,6 +32,7 @@ class State:
         self.fields["tool"] = tool
         self.revision = int(self.fields["revision"])
         self.vertices, self.edges, self.faces, self.knobs = {}, {}, {}, {}
+        self.curve_points = {}  # (curve, point) -> pixel
         for line in lines[1:]:
             w = line.split()
             if w[0] == "view":
@@ -44,6 +45,9 @@ class State:
                 table = {"vertex": self.vertices, "edge": self.edges, "face": self.faces,
                          "knob": self.knobs}[w[0]]
                 table[int(w[1])] = where
+            elif w[0] == "curve-point":
+                self.curve_points[(int(w[1]), int(w[2]))] = (
+                    None if w[3] == "hidden" else (float(w[3]), float(w[4])))
 
     def count(self, what):
         return int(self.fields[what])

@@ -49,6 +49,10 @@ void LiveSurfaces::rebuild_overlays(const Scene& scene) {
   if (scene.network)
     for (std::size_t e = 0; e < scene.network->edges.size(); ++e)
       edge_points_.push_back(edge_points(*scene.network, int(e)));
+  // The free curves' points follow the network's and the surfaces' (collect_scene_points).
+  curve_points_at_ = points_.positions.size();
+  for (const SceneCurve& c : scene.curves) curve_points_at_ -= c.points.size();
+  free_lines_.rebuild(scene.curves, draw_.free_curves);
 }
 
 bool LiveSurfaces::update_overlays(const Scene& scene, const std::vector<int>& changed) {
@@ -85,6 +89,14 @@ bool LiveSurfaces::update_overlays(const Scene& scene, const std::vector<int>& c
         return false;
     }
   }
+  if (!free_lines_.update(scene.curves, draw_.free_curves)) return false;
+  std::size_t at = curve_points_at_;
+  for (const SceneCurve& c : scene.curves)
+    for (const Vec3& p : c.points) {
+      if (at >= points_.positions.size()) return false;
+      points_.positions[at++] = p;
+    }
+  if (at != points_.positions.size()) return false;
   draw_.net.points = points_.positions;
   draw_.arrows = points_.arrows;
   return true;

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "app/editor/logic/free_curve_lines.hpp"
 #include "app/editor/logic/scene_points.hpp"
 #include "core/eval/scene_evaluation.hpp"
 
@@ -68,6 +69,8 @@ class LiveSurfaces {
   ScenePoints points_;
   // Every edge's control points as last drawn.
   std::vector<std::array<Vec3, 4>> edge_points_;
+  FreeCurveLines free_lines_;
+  std::size_t curve_points_at_ = 0;  // the first free-curve point in points_
   std::vector<int> curve_segments_;  // per edge, or empty: all kCurveSegments
   uint64_t revision_ = 0;
   uint64_t points_layout_ = 0;

@@ -46,6 +46,8 @@ NetFocus net_focus(const std::vector<PointRef>& points, const std::vector<int>& 
       case PointRef::Kind::PatchPoint:
         f.patches.push_back(r.object);
         break;
+      case PointRef::Kind::CurvePoint:  // curve points are never thinned out
+        break;
     }
   }
   return f;
@@ -167,6 +169,8 @@ NetThinning thin_control_net(const ScenePoints& pts, const SceneSurfaces& surfac
       case PointOwner::Kind::Face:
         show = point_group[i] < 0 || group_on[point_group[i]];
         if (!show) ++(o.kind == PointOwner::Kind::Face ? t.hidden_derived : t.hidden_patch);
+        break;
+      case PointOwner::Kind::Curve:  // few, and the only handle on a curve: always shown
         break;
     }
     hidden[i] = !show;

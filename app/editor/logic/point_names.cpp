@@ -16,6 +16,8 @@ std::optional<PointRef> parse_point_name(const std::string& name) {
     r = PointRef::handle(a, b);
   } else if (word == "patch" && in >> second >> b && second == "point" && b >= 0) {
     r = PointRef::patch_point(a, b);
+  } else if (word == "curve" && in >> second >> b && second == "point" && b >= 0) {
+    r = PointRef::curve_point(a, b);
   }
   std::string rest;
   if (in >> rest) return std::nullopt;  // trailing words

@@ -134,6 +134,19 @@ ScenePoints collect_scene_points(const Scene& scene, const SceneSurfaces& surfac
     add_group(s, segments, surface.evaluator->patch(), {PointOwner::Kind::Face, int(i)}, false, -1,
               &network_points);
   }
+  // Free curves: every control point is the user's; consecutive points make the polygon (a
+  // Hermite curve has two points and no polygon between them).
+  for (std::size_t c = 0; c < scene.curves.size(); ++c) {
+    const SceneCurve& curve = scene.curves[c];
+    const auto base = static_cast<uint32_t>(s.positions.size());
+    for (std::size_t k = 0; k < curve.points.size(); ++k)
+      add(s, curve.points[k], ControlPointKind::Boundary,
+          PointRef::curve_point(static_cast<int>(c), static_cast<int>(k)),
+          {PointOwner::Kind::Curve, static_cast<int>(c)});
+    if (curve.type != CurveType::Hermite)
+      for (std::size_t k = 1; k < curve.points.size(); ++k)
+        segments.add(base + uint32_t(k - 1), base + uint32_t(k));
+  }
   return s;
 }
 

@@ -8,8 +8,8 @@
 //
 // Layout: the network's vertices, then two handles per edge, then one group per explicit scene
 // patch and one per network face (its derived points; its boundary points are the network's
-// own where they coincide exactly). Groups let an edit refresh the points of the surfaces it
-// changed only (update_group).
+// own where they coincide exactly), then the free curves' points, curve after curve. Groups let
+// an edit refresh the points of the surfaces it changed only (update_group).
 #pragma once
 
 #include <optional>
@@ -21,10 +21,10 @@
 
 namespace pl {
 
-// Whose a point is: a network vertex, an edge (its handles), an explicit scene patch or a
-// network face (by surface index).
+// Whose a point is: a network vertex, an edge (its handles), an explicit scene patch, a
+// network face (by surface index) or a free curve.
 struct PointOwner {
-  enum class Kind : uint8_t { Vertex, Edge, Patch, Face };
+  enum class Kind : uint8_t { Vertex, Edge, Patch, Face, Curve };
   Kind kind = Kind::Vertex;
   int index = -1;
   bool operator==(const PointOwner&) const = default;

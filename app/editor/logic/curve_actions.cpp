@@ -1,0 +1,73 @@
+#include "app/editor/logic/curve_actions.hpp"
+
+#include <limits>
+
+#include "app/cli/draw_scene_builder.hpp"
+#include "app/document/curve_commands.hpp"
+#include "app/editor/logic/tool.hpp"
+
+namespace pl {
+
+std::optional<int> selected_curve(const Scene& scene, const Selection& selection) {
+  for (const SelectionItem& i : selection.items())
+    if (i.kind == SelectionItem::Kind::Point && i.point.kind == PointRef::Kind::CurvePoint &&
+        point_exists(scene, i.point))
+      return i.point.object;
+  return std::nullopt;
+}
+
+double nearest_curve_parameter(const SceneCurve& curve, const Vec3& at) {
+  double best_t = curve.t_min(), best = std::numeric_limits<double>::infinity();
+  for (double t : curve_sample_parameters(curve, 4 * free_curve_samples_per_span(curve))) {
+    const double d = glm::length(evaluate(curve, t).p - at);
+    if (d < best) best = d, best_t = t;
+  }
+  return best_t;
+}
+
+double default_knot_parameter(const SceneCurve& curve) {
+  double a = curve.t_min(), b = curve.t_max();
+  for (const auto& [s0, s1] : curve_spans(curve))
+    if (s1 - s0 > b - a || (a == curve.t_min() && b == curve.t_max())) a = s0, b = s1;
+  return 0.5 * (a + b);
+}
+
+void add_curve_actions(ActionRegistry& r, Document& doc, Selection& selection,
+                       CurveActionHooks hooks) {
+  using Op = CurveOperationCommand::Operation;
+  // The parameter an insertion or split acts at: where the menu was opened, else the default.
+  auto parameter = [&doc, hooks](int c) {
+    const SceneCurve& curve = doc.scene().curves[c];
+    if (const auto at = hooks.menu_point()) return nearest_curve_parameter(curve, *at);
+    return default_knot_parameter(curve);
+  };
+  const struct {
+    const char* id;
+    const char* label;
+    const char* help;
+    Op op;
+    bool at_parameter;
+  } entries[] = {
+      {"curve.insert_knot", "Insert Knot", "a knot where the menu was opened (the curve stays)",
+       Op::InsertKnot, true},
+      {"curve.elevate", "Elevate Degree", "one degree more (the curve stays)", Op::ElevateDegree,
+       false},
+      {"curve.split", "Split Curve", "two curves, split where the menu was opened", Op::Split,
+       true},
+      {"curve.reverse", "Reverse Curve", "the same curve run the other way", Op::Reverse, false},
+  };
+  for (const auto& e : entries) {
+    Action a =
+        make_action(e.id, "Curve", e.label, {}, e.help, [&doc, &selection, hooks, e, parameter] {
+          const auto c = selected_curve(doc.scene(), selection);
+          if (!c) return;
+          const double t = e.at_parameter ? parameter(*c) : 0.0;
+          run_command(doc, hooks.say, std::make_shared<CurveOperationCommand>(*c, e.op, t));
+        });
+    a.context = context_bit(ContextTarget::Point) | context_bit(ContextTarget::Empty);
+    a.enabled = [&doc, &selection] { return selected_curve(doc.scene(), selection).has_value(); };
+    r.add(std::move(a));
+  }
+}
+
+}  // namespace pl

@@ -1,0 +1,73 @@
+// The curve actions of the editor's table act on the curve of the selected point, at the
+// parameter where the right-click menu was opened (nearest sample) or the middle of the longest
+// span; each is one undo step and keeps the curve's shape where the operation promises it.
+#include "app/editor/logic/curve_actions.hpp"
+
+#include <gtest/gtest.h>
+
+#include "app/document/curve_commands.hpp"
+#include "curve_test_util.hpp"
+
+namespace pl::test {
+namespace {
+
+TEST(CurveActions, ActOnTheSelectedCurveWhereTheMenuWasOpened) {
+  Document doc;
+  Selection selection;
+  ActionRegistry r;
+  std::optional<Vec3> menu_at;
+  std::string said;
+  CurveActionHooks hooks;
+  hooks.say = [&](const std::string& s) { said = s; };
+  hooks.menu_point = [&] { return menu_at; };
+  add_curve_actions(r, doc, selection, hooks);
+  doc.execute(std::make_unique<AddCurveCommand>(CurveType::BSpline, six_points()));
+  const SceneCurve original = doc.scene().curves[0];
+
+  // Nothing selected: nothing to act on.
+  EXPECT_FALSE(r.is_enabled(*r.find("curve.insert_knot")));
+  selection.set({SelectionItem::of_point(PointRef::curve_point(0, 2))});
+  ASSERT_TRUE(r.is_enabled(*r.find("curve.insert_knot")));
+
+  // From the menu opened at the curve's point at t: a knot at t (to the sampling's resolution).
+  const double t_menu = 0.37 * original.t_max();
+  menu_at = evaluate(original, t_menu).p;
+  ASSERT_TRUE(r.run("curve.insert_knot"));
+  const SceneCurve inserted = doc.scene().curves[0];
+  ASSERT_EQ(inserted.points.size(), 7u);
+  double nearest = 1e9;
+  for (double k : inserted.knots)
+    if (std::find(original.knots.begin(), original.knots.end(), k) == original.knots.end())
+      nearest = std::min(nearest, std::abs(k - t_menu));
+  EXPECT_LE(nearest, (original.t_max() - original.t_min()) / 100);
+  EXPECT_LE(max_sample_difference(original, inserted), 1e-13);
+
+  menu_at.reset();
+  ASSERT_TRUE(r.run("curve.elevate"));
+  EXPECT_EQ(curve_degree(doc.scene().curves[0]), 4);
+  EXPECT_LE(max_sample_difference(original, doc.scene().curves[0]), 1e-12);
+  ASSERT_TRUE(r.run("curve.reverse"));
+  EXPECT_LE(glm::length(evaluate(doc.scene().curves[0], doc.scene().curves[0].t_min()).p -
+                        original.points.back()),
+            1e-12);
+  ASSERT_TRUE(r.run("curve.split"));
+  EXPECT_EQ(doc.scene().curves.size(), 2u);
+  // Each was one step: four undos give back the original curve alone.
+  for (int i = 0; i < 4; ++i) ASSERT_TRUE(doc.undo());
+  ASSERT_EQ(doc.scene().curves.size(), 1u);
+  EXPECT_EQ(doc.scene().curves[0].points, original.points);
+  EXPECT_EQ(doc.scene().curves[0].knots, original.knots);
+}
+
+TEST(CurveActions, DefaultKnotGoesInTheLongestSpan) {
+  SceneCurve c;
+  c.type = CurveType::BSpline;
+  c.degree = 2;
+  c.points = six_points();
+  c.knots = {0, 0, 0, 1, 2, 6, 7, 7, 7};
+  EXPECT_DOUBLE_EQ(default_knot_parameter(c), 4.0);
+  EXPECT_NEAR(nearest_curve_parameter(c, evaluate(c, 5.5).p), 5.5, 7.0 / 100);
+}
+
+}  // namespace
+}  // namespace pl::test
