@@ -84,6 +84,19 @@ class PatchEvaluator {
   std::size_t max_columns() const;
   void set_column_budget(std::size_t bytes) { column_budget_ = bytes; }  // tests, tuning
 
+  // Samples per parallel task of each loop (core/parallel/parallel_for.hpp). Small enough that a
+  // thread the kernel deschedules holds little work while the others finish the rest, large
+  // enough that taking a task costs little next to doing it; `patchlab_bench --grains` measures
+  // them quiet and with a core busy (the defaults come from that sweep). A loop over fewer
+  // samples than its grain runs on the calling thread.
+  struct Grains {
+    std::size_t evaluate = 1024;  // evaluate_all: evaluation and geometry (~0.3-1 us a sample)
+    std::size_t column = 4096;    // an influence column's build
+    std::size_t update = 2048;    // a drag update: axpy and geometry (~20-40 ns a sample)
+  };
+  const Grains& grains() const { return grains_; }
+  void set_grains(const Grains& g) { grains_ = g; }  // tests, tuning
+
  private:
   // Jets allocated but not initialised: the column build writes every one in parallel, and
   // zero-filling a million-sample column first would cost a third of the build.
@@ -126,6 +139,7 @@ class PatchEvaluator {
   uint64_t use_clock_ = 0;
   uint64_t revision_ = 0;
   std::size_t column_budget_ = kColumnBudget;
+  Grains grains_;
   std::vector<std::size_t> last_batch_;  // the points move_control_points moved last time
 };
 
