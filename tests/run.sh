@@ -13,7 +13,8 @@ if [ "$mode" = "--sanitize" ]; then
   # Debug keeps the asserts; -O1 keeps the sanitized suite fast enough for a 2-core CI.
   cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g -O1" \
     -DPATCHLAB_SANITIZE=ON
-  # LeakSanitizer reports Mesa's process-lifetime allocations; those are not ours.
+  # LeakSanitizer reports Mesa's and libgomp's process-lifetime allocations; those are not ours
+  # (OpenSubdiv and OpenCASCADE's image libraries still load libgomp).
   export LSAN_OPTIONS="suppressions=$root/tests/lsan.supp:print_suppressions=0"
   export ASAN_OPTIONS="detect_odr_violation=0:strict_string_checks=1"
   export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
