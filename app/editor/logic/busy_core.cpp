@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -13,19 +14,27 @@
 
 namespace pl {
 
+// A shell loop, not a forked copy of this process spinning: after fork() every page this process
+// writes first would be copied (copy on write) for as long as the child lives, and that would be
+// measured as the cost of the busy core. vfork shares the address space until the exec, so
+// nothing is copied. The kernel kills the loop when the thread that started it ends (prctl),
+// so a crash leaves no spinner behind.
 BusyCore::BusyCore() {
   const pid_t parent = getpid();
-  pid_ = fork();
+  pid_ = vfork();
+  if (pid_ == 0) {  // until the exec only system calls: this is the parent's memory
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != parent) _exit(0);
+    execl("/bin/sh", "sh", "-c", "while :; do :; done", static_cast<char*>(nullptr));
+    _exit(127);
+  }
   if (pid_ < 0)
     throw std::runtime_error(std::string("cannot start a spinning process: ") +
                              std::strerror(errno));
-  if (pid_ == 0) {
-    // The child of a threaded process may only make async-signal-safe calls: two system calls,
-    // then arithmetic until the parent kills it (or dies itself).
-    prctl(PR_SET_PDEATHSIG, SIGKILL);
-    if (getppid() != parent) _exit(0);
-    volatile unsigned long spin = 0;
-    for (;;) spin = spin + 1;
+  int status = 0;
+  if (waitpid(pid_, &status, WNOHANG) == pid_) {
+    pid_ = -1;
+    throw std::runtime_error("cannot start a spinning process: /bin/sh did not run");
   }
   // Let the spinner reach the run queue before anything is measured.
   std::this_thread::sleep_for(std::chrono::milliseconds(20));

@@ -10,8 +10,8 @@ namespace pl {
 
 class BusyCore {
  public:
-  // Starts the spinning process; throws std::runtime_error if it cannot. The child also dies
-  // with this process, so a crash leaves no spinner behind.
+  // Starts the spinning process (a shell loop); throws std::runtime_error if it cannot. The
+  // loop also ends when the thread that made this object ends, so a crash leaves no spinner.
   BusyCore();
   // Kills the spinner and waits for it.
   ~BusyCore();
