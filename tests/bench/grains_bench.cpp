@@ -40,7 +40,8 @@ void bench_grains(const Options& o) {
     const std::size_t k = 5;
     Vec3 p = ev.patch().control_point(k);
     int step = 0;
-    for (std::size_t g : grains(ev.sample_count(), {256, 512, 1024, 2048, 4096, 8192, 16384})) {
+    for (std::size_t g :
+         grains(ev.sample_count(), {64, 128, 256, 512, 1024, 2048, 4096, 8192, 16384})) {
       PatchEvaluator::Grains gs = ev.grains();
       gs.update = g;
       ev.set_grains(gs);

@@ -17,14 +17,17 @@ namespace pl {
 // A shell loop, not a forked copy of this process spinning: after fork() every page this process
 // writes first would be copied (copy on write) for as long as the child lives, and that would be
 // measured as the cost of the busy core. vfork shares the address space until the exec, so
-// nothing is copied. The kernel kills the loop when the thread that started it ends (prctl),
-// so a crash leaves no spinner behind.
+// nothing is copied. The loop runs in a session of its own, like a build or a browser: with the
+// kernel's autogroup scheduling a spinner in this process's session would take its time from
+// this process's share instead of from the machine's. The kernel kills the loop when the thread
+// that started it ends (prctl), so a crash leaves no spinner behind.
 BusyCore::BusyCore() {
   const pid_t parent = getpid();
   pid_ = vfork();
   if (pid_ == 0) {  // until the exec only system calls: this is the parent's memory
     prctl(PR_SET_PDEATHSIG, SIGKILL);
     if (getppid() != parent) _exit(0);
+    setsid();
     execl("/bin/sh", "sh", "-c", "while :; do :; done", static_cast<char*>(nullptr));
     _exit(127);
   }
