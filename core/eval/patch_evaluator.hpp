@@ -86,13 +86,16 @@ class PatchEvaluator {
 
   // Samples per parallel task of each loop (core/parallel/parallel_for.hpp). Small enough that a
   // thread the kernel deschedules holds little work while the others finish the rest, large
-  // enough that taking a task costs little next to doing it; `patchlab_bench --grains` measures
-  // them quiet and with a core busy (the defaults come from that sweep). A loop over fewer
-  // samples than its grain runs on the calling thread.
+  // enough that taking a task costs little next to doing it. Chosen from `patchlab_bench
+  // --grains` (2 cores shared with other work, quiet and with one core busy): drag updates of
+  // 1e5 samples kept their quiet time with one core busy for grains of 128 to 1024 and lost
+  // 2-3x at 64 (task overhead) and on one thread; evaluation showed no difference from 256 to
+  // 8192; column builds were steadiest at 8192. A loop over at most `grain` samples runs on the
+  // calling thread.
   struct Grains {
-    std::size_t evaluate = 1024;  // evaluate_all: evaluation and geometry (~0.3-1 us a sample)
-    std::size_t column = 4096;    // an influence column's build
-    std::size_t update = 2048;    // a drag update: axpy and geometry (~20-40 ns a sample)
+    std::size_t evaluate = 512;  // evaluate_all: one evaluate_many call per task (~0.1-0.2 ms)
+    std::size_t column = 8192;   // an influence column's build
+    std::size_t update = 512;    // a drag update: axpy and geometry (~10-20 us a task)
   };
   const Grains& grains() const { return grains_; }
   void set_grains(const Grains& g) { grains_ = g; }  // tests, tuning
