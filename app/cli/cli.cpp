@@ -6,7 +6,7 @@
 
 #include "app/cli/arguments.hpp"
 #include "app/cli/commands.hpp"
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 
 namespace pl {
 
@@ -42,7 +42,8 @@ void print_help(std::ostream& os) {
   os << "PatchLab " PATCHLAB_VERSION
         " - Gregory and Generalized Bézier patches over curve networks.\n\n";
   print_usage(os);
-  os << "\nFILE is a scene (.json, see docs/scene-format.md).\n"
+  os << "\nFILE is a scene (.json, see docs/scene-format.md) or a GB net (.gbp, see\n"
+        "docs/gbp-format.md); the commands and their output: docs/cli.md.\n"
         "  --density N   samples per boundary curve (default 32)\n"
         "  --scheme S    fill network faces with gregory (3- and 4-sided faces) or gb\n"
         "Exit status: 0 success, 1 bad input (message names file and place), 2 wrong usage.\n";

@@ -1,4 +1,4 @@
-// The `patchlab` command line (../shared/spec/cli.md): dispatches to the sub-commands.
+// The `patchlab` command line (docs/cli.md): dispatches to the sub-commands.
 #pragma once
 
 #include <ostream>

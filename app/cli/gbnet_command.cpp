@@ -1,6 +1,6 @@
 // `patchlab gbnet IN.gbp -o OUT.gbp [--defaults boundary|ring1] [--elevate K]`: fills the control
 // points of a GB patch that a designer did not place with their default positions
-// (core/patch/gb_default_net.hpp) and/or elevates its degree K times (core/patch/gb_elevation.hpp).
+// (core/patch/gb/default_net.hpp) and/or elevates its degree K times (core/patch/gb/elevation.hpp).
 // A .gbp has no "unplaced" marker, so --defaults names what is kept: the boundary alone, or the
 // boundary and the cross-boundary ring; every other point, C_0 included, is recomputed.
 #include <string>
@@ -8,10 +8,10 @@
 #include "app/cli/arguments.hpp"
 #include "app/cli/cli.hpp"
 #include "app/cli/commands.hpp"
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/io/gbp_io.hpp"
-#include "core/patch/gb_default_net.hpp"
-#include "core/patch/gb_elevation.hpp"
+#include "core/patch/gb/default_net.hpp"
+#include "core/patch/gb/elevation.hpp"
 
 namespace pl {
 

@@ -1,7 +1,7 @@
 #include "app/cli/load_input.hpp"
 
 #include "app/cli/arguments.hpp"
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/io/gbp_io.hpp"
 #include "core/io/scene_io.hpp"
 

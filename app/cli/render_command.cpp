@@ -1,4 +1,4 @@
-// `patchlab render FILE -o OUT.png ...` (../shared/spec/cli.md): headless, through an EGL
+// `patchlab render FILE -o OUT.png ...` (docs/cli.md, docs/rendering.md): headless, through an EGL
 // offscreen context, so it works with no X server and DISPLAY unset.
 #include <charconv>
 #include <cmath>
@@ -11,7 +11,7 @@
 #include "app/cli/load_input.hpp"
 #include "app/cli/work_limits.hpp"
 #include "core/io/atomic_file.hpp"
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/io/input_limits.hpp"
 #include "core/mesh/finite_check.hpp"
 #include "render/default_view.hpp"

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/io/input_limits.hpp"
 #include "core/patch/catmull_clark_patch.hpp"
 
@@ -12,12 +12,14 @@ namespace pl {
 namespace {
 
 // Samples of one surface with `sides` domain sides, per (density + 1)^2: the unit square's grid,
-// the triangle's half, rings around a convex n-gon's centre (n/2), or a concave domain's
-// triangular grid at the boundary spacing (about n^2/11 for a regular n-gon).
+// the triangle's half, rings around a convex n-gon's centre (n/2), or a polygon domain's
+// triangular grid at the boundary spacing (about n^2/11 for a regular n-gon), which is capped
+// so that it grows linearly in n from 9 sides on (0.85 n measured for 16 to 64 sides;
+// core/domain/concave_polygon.cpp).
 double samples_per_square(int sides) {
   if (sides == 4) return 1.0;
   if (sides == 3) return 0.5;
-  return std::max(0.5 * sides, 0.1 * sides * sides);
+  return std::max(0.5 * sides, std::min(0.1 * sides * sides, 0.9 * sides));
 }
 
 }  // namespace

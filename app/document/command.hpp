@@ -1,4 +1,4 @@
-// Every edit is a command on the document (architecture note 9). UI code never mutates geometry
+// Every edit is a command on the document. UI code never mutates geometry
 // directly. Undo does not invert a command: the document keeps the scene before and after it
 // (patches are shared and copied on write, so that is cheap), which makes undo bit-exact even
 // where a command moves several things at once.

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/io/scene_io.hpp"
 
 namespace pl {

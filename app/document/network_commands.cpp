@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/network/network_filling.hpp"
 
 namespace pl {

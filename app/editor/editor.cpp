@@ -14,7 +14,7 @@
 #include "app/editor/logic/editor_paths.hpp"
 #include "app/editor/logic/select_tool.hpp"
 #include "app/editor/side_panel.hpp"
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 
 namespace pl {
 

@@ -6,7 +6,7 @@
 #include "app/editor/editor.hpp"
 #include "app/editor/screenshot.hpp"
 #include "core/io/atomic_file.hpp"
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/mesh/mesh_export.hpp"
 #include "render/frame.hpp"
 

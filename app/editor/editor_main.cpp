@@ -10,7 +10,7 @@
 #include "app/editor/logic/grid_scene.hpp"
 #include "app/editor/logic/selection.hpp"
 #include "app/editor/pick_benchmark.hpp"
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 
 namespace pl {
 

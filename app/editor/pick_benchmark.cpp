@@ -8,7 +8,7 @@
 #include "app/editor/logic/preferences.hpp"
 #include "app/editor/logic/scene_picker.hpp"
 #include "app/editor/logic/surface_probe.hpp"
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/network/sample_networks.hpp"
 
 namespace pl {

@@ -2,7 +2,7 @@
 
 #include <chrono>
 
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 
 namespace pl {
 

@@ -8,7 +8,7 @@
 #include "core/cad/cad_model.hpp"
 #include "core/cad/occt_io.hpp"
 #include "core/cad/occt_shape.hpp"
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 
 namespace pl {
 

@@ -7,7 +7,7 @@
 
 #include "core/analysis/scene_analysis.hpp"  // angle_deg
 #include "core/cad/side_matching.hpp"
-#include "core/parallel/parallel_for.hpp"
+#include "core/base/parallel_for.hpp"
 
 namespace pl {
 

@@ -3,12 +3,12 @@
 #include <cmath>
 
 #include "core/cad/exact_surfaces.hpp"
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/network/network_filling.hpp"
 #include "core/patch/catmull_clark_patch.hpp"
 #include "core/patch/gap_fill_patch.hpp"
-#include "core/patch/gb_patch.hpp"
-#include "core/patch/gb_ribbon_patch.hpp"
+#include "core/patch/gb/gb_patch.hpp"
+#include "core/patch/gb/gb_ribbon_patch.hpp"
 #include "core/patch/gregory_quad.hpp"
 #include "core/patch/gregory_tri.hpp"
 

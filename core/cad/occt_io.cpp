@@ -36,7 +36,7 @@
 #include <mutex>
 
 #include "core/io/atomic_file.hpp"
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 
 namespace pl {
 

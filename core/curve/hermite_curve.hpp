@@ -1,4 +1,4 @@
-// Cubic Hermite curve (seed 002): end points p0, p1 and end derivatives d0, d1,
+// Cubic Hermite curve: end points p0, p1 and end derivatives d0, d1,
 // f(t) = alpha0 p0 + alpha1 p1 + beta0 d0 + beta1 d1.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The interpolating cubic of seed 002: through p0..p3 at t = 0, 1/3, 2/3, 1, with
+// The interpolating cubic: through p0..p3 at t = 0, 1/3, 2/3, 1, with
 // f(t) = [1 t t^2 t^3] M_I [p0 p1 p2 p3]^T.
 #pragma once
 

@@ -12,10 +12,6 @@ namespace pl {
 
 namespace {
 
-double cross(Vec2 a, Vec2 b) {
-  return a.x * b.y - a.y * b.x;
-}
-
 // Closed segments ab and cd share a point.
 bool segments_touch(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
@@ -130,8 +126,13 @@ Tessellation ConcavePolygonDomain::tessellate(int density) const {
     for (int k = 0; k <= N; ++k) t.sides[i][k] = static_cast<uint32_t>((i * N + k) % m);
   // Interior: a triangular grid (slightly rotated, so its points are rarely cocircular or on
   // a side's line) at the mean boundary spacing, kept away from every side by more than half
-  // that side's own spacing so no sliver forms against the boundary.
-  const double h = perimeter / (n * N);
+  // that side's own spacing so no sliver forms against the boundary. With many sides the mean
+  // boundary spacing shrinks like 1/n and the grid would grow like n^2: the spacing is kept at
+  // least that of about kInteriorPerSide N^2 points per side (the ring tessellation of a convex
+  // polygon has N^2 / 2), so the sample count grows linearly in n. Regular polygons of up to 8
+  // sides (and the usual concave shapes) keep the mean boundary spacing.
+  constexpr double kInteriorPerSide = 1 / (0.866 * 1.5);  // 0.866 h^2: area per grid point
+  const double h = std::max(perimeter / (n * N), std::sqrt(area() / (kInteriorPerSide * n)) / N);
   const double rot = 0.1, c = std::cos(rot), s = std::sin(rot);
   Vec2 lo = vertices_[0], hi = vertices_[0];
   for (const Vec2& v : vertices_) lo = glm::min(lo, v), hi = glm::max(hi, v);

@@ -7,12 +7,6 @@
 
 namespace pl {
 
-namespace {
-double cross(Vec2 a, Vec2 b) {
-  return a.x * b.y - a.y * b.x;
-}
-}  // namespace
-
 ConvexPolygonDomain::ConvexPolygonDomain(std::vector<Vec2> vertices)
     : vertices_(std::move(vertices)), centre_(0) {
   const int n = static_cast<int>(vertices_.size());

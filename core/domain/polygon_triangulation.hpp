@@ -17,7 +17,8 @@ namespace pl {
 // remaining points lie strictly inside. Returns counter-clockwise
 // triangles covering the polygon exactly once. An interior point that falls exactly on an
 // existing edge splits it; one that coincides with a vertex or lies on the boundary is skipped;
-// `used` (if given) reports which points are referenced. Throws std::invalid_argument if the polygon cannot be ear-clipped.
+// `used` (if given) reports which points are referenced. Throws std::invalid_argument if the
+// polygon cannot be ear-clipped.
 std::vector<std::array<uint32_t, 3>> triangulate_polygon(std::span<const Vec2> points,
                                                          std::size_t boundary_count,
                                                          const std::vector<uint32_t>& corners,

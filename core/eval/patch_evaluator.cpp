@@ -7,7 +7,7 @@
 #include <mutex>
 #include <optional>
 
-#include "core/parallel/parallel_for.hpp"
+#include "core/base/parallel_for.hpp"
 
 namespace pl {
 

@@ -1,6 +1,6 @@
 // Owns the samples of one patch: a (shared) tessellation, every sample's surface jet and its
 // differential geometry. Moving a control point is an axpy with that point's influence column
-// (architecture note 3): only samples where phi_k is non-zero change, and only their normals
+// (docs/developing.md): only samples where phi_k is non-zero change, and only their normals
 // and curvatures are recomputed.
 #pragma once
 
@@ -84,7 +84,7 @@ class PatchEvaluator {
   std::size_t max_columns() const;
   void set_column_budget(std::size_t bytes) { column_budget_ = bytes; }  // tests, tuning
 
-  // Samples per parallel task of each loop (core/parallel/parallel_for.hpp). Small enough that a
+  // Samples per parallel task of each loop (core/base/parallel_for.hpp). Small enough that a
   // thread the kernel deschedules holds little work while the others finish the rest, large
   // enough that taking a task costs little next to doing it. Chosen from `patchlab_bench
   // --grains` (2 cores shared with other work, quiet and with one core busy): drag updates of

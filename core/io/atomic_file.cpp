@@ -10,7 +10,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/io/input_limits.hpp"
 
 namespace pl {

@@ -1,9 +1,10 @@
 // {"type": "bezier", "degree": [m, n], "points": [...]} of scene-format.md.
-#include "core/io/bezier_patch_codec.hpp"
-
+#include "core/io/patch_codec.hpp"
 #include "core/patch/bezier_patch.hpp"
 
 namespace pl {
+
+namespace {
 
 std::unique_ptr<Patch> read_bezier_patch(const JsonNode& node) {
   node.allow_only({"type", "name", "degree", "points"});
@@ -19,5 +20,9 @@ void write_bezier_patch(const Patch& patch, nlohmann::json& out) {
   out["degree"] = {p.degree_u(), p.degree_v()};
   out["points"] = points_json(p.control_points());
 }
+
+}  // namespace
+
+const PatchCodec kBezierPatchCodec{BezierPatch::kType, read_bezier_patch, write_bezier_patch};
 
 }  // namespace pl

@@ -1,11 +1,12 @@
 // {"type": "bspline", "degree": [p, q], "size": [nu, nv], "knots_u": [...], "knots_v": [...],
 //  "points": [nu*nv points]}; points[i*nv+j] is P_ij; absent knots are clamped uniform.
-#include "core/io/bspline_patch_codec.hpp"
-
 #include "core/io/classic_codec_util.hpp"
+#include "core/io/patch_codec.hpp"
 #include "core/patch/bspline_patch.hpp"
 
 namespace pl {
+
+namespace {
 
 std::unique_ptr<Patch> read_bspline_patch(const JsonNode& node) {
   node.allow_only({"type", "name", "degree", "size", "knots_u", "knots_v", "points"});
@@ -18,5 +19,9 @@ void write_bspline_patch(const Patch& patch, nlohmann::json& out) {
   const auto& s = dynamic_cast<const BSplinePatch&>(patch);
   write_spline_grid(s.grid(), s.control_points(), out);
 }
+
+}  // namespace
+
+const PatchCodec kBSplinePatchCodec{BSplinePatch::kType, read_bspline_patch, write_bspline_patch};
 
 }  // namespace pl

@@ -1,13 +1,14 @@
 // {"type": "catmull-clark", "vertices": [points], "faces": [[a, b, c, d], ...]}: a polygon control
 // mesh (3 or more vertices a face), faces counter-clockwise seen from outside (see
 // catmull_clark_patch.hpp).
-#include "core/io/catmull_clark_codec.hpp"
-
 #include <cstdio>
 
+#include "core/io/patch_codec.hpp"
 #include "core/patch/catmull_clark_patch.hpp"
 
 namespace pl {
+
+namespace {
 
 std::unique_ptr<Patch> read_catmull_clark(const JsonNode& node) {
   node.allow_only({"type", "name", "vertices", "faces"});
@@ -54,5 +55,10 @@ void write_catmull_clark(const Patch& patch, nlohmann::json& out) {
   out["vertices"] = points_json(cc.control_points());
   out["faces"] = cc.limit().faces();
 }
+
+}  // namespace
+
+const PatchCodec kCatmullClarkCodec{CatmullClarkPatch::kType, read_catmull_clark,
+                                    write_catmull_clark};
 
 }  // namespace pl

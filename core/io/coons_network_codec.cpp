@@ -2,12 +2,13 @@
 //  "t": [ns columns of nt numbers], "data": [4*ns*nt vectors], "lengths": "network" | "equal"}
 // data[(i*nt + j)*4 + q] is r, r_s, r_t, r_st (q = 0..3) of node (i, j); see
 // coons_network_patch.hpp and docs/classic-types.md.
-#include "core/io/coons_network_codec.hpp"
-
 #include "core/io/classic_codec_util.hpp"
+#include "core/io/patch_codec.hpp"
 #include "core/patch/coons_network_patch.hpp"
 
 namespace pl {
+
+namespace {
 
 namespace {
 std::vector<std::vector<double>> read_lines(const JsonNode& node, std::size_t count,
@@ -52,5 +53,10 @@ void write_coons_network(const Patch& patch, nlohmann::json& out) {
   out["data"] = points_json(p.control_points());
   out["lengths"] = p.lengths() == CoonsNetworkPatch::Lengths::Equal ? "equal" : "network";
 }
+
+}  // namespace
+
+const PatchCodec kCoonsNetworkCodec{CoonsNetworkPatch::kType, read_coons_network,
+                                    write_coons_network};
 
 }  // namespace pl

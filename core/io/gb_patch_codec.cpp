@@ -1,10 +1,11 @@
 // {"type": "gb", "sides": n, "degree": d, "points": [...]} of scene-format.md; the points in
 // .gbp order (central point first), see GBPatch.
-#include "core/io/gb_patch_codec.hpp"
-
-#include "core/patch/gb_patch.hpp"
+#include "core/io/patch_codec.hpp"
+#include "core/patch/gb/gb_patch.hpp"
 
 namespace pl {
+
+namespace {
 
 std::unique_ptr<Patch> read_gb_patch(const JsonNode& node) {
   node.allow_only({"type", "name", "sides", "degree", "points"});
@@ -21,5 +22,9 @@ void write_gb_patch(const Patch& patch, nlohmann::json& out) {
   out["degree"] = p.degree();
   out["points"] = points_json(p.control_points());
 }
+
+}  // namespace
+
+const PatchCodec kGBPatchCodec{GBPatch::kType, read_gb_patch, write_gb_patch};
 
 }  // namespace pl

@@ -1,11 +1,12 @@
 // {"type": "gb-ribbons", "domain": [[u, v], ...], "ribbons": [{"degree": d, "layers": l,
 //  "points": [...]}, ...]}: see docs/patch-types.md. Each ribbon lists its l rows of d + 1
 // points, boundary row first; consecutive ribbons repeat their shared corner point.
-#include "core/io/gb_ribbon_patch_codec.hpp"
-
-#include "core/patch/gb_ribbon_patch.hpp"
+#include "core/io/patch_codec.hpp"
+#include "core/patch/gb/gb_ribbon_patch.hpp"
 
 namespace pl {
+
+namespace {
 
 std::unique_ptr<Patch> read_gb_ribbon_patch(const JsonNode& node) {
   node.allow_only({"type", "name", "domain", "ribbons"});
@@ -49,5 +50,10 @@ void write_gb_ribbon_patch(const Patch& patch, nlohmann::json& out) {
   }
   out["ribbons"] = ribbons;
 }
+
+}  // namespace
+
+const PatchCodec kGBRibbonPatchCodec{GBRibbonPatch::kType, read_gb_ribbon_patch,
+                                     write_gb_ribbon_patch};
 
 }  // namespace pl

@@ -7,8 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/base/data_error.hpp"
 #include "core/io/atomic_file.hpp"
-#include "core/io/data_error.hpp"
 #include "core/io/input_limits.hpp"
 #include "core/io/json_node.hpp"
 #include "core/io/scene_checks.hpp"

@@ -1,11 +1,11 @@
-// The .gbp format (../shared/spec/gbp-format.md): one convex GB patch as whitespace-separated
+// The .gbp format (docs/gbp-format.md): one convex GB patch as whitespace-separated
 // numbers "n d", the central point, then the boundary and inner layers in GBPatch's point order.
 #pragma once
 
 #include <filesystem>
 #include <string>
 
-#include "core/patch/gb_patch.hpp"
+#include "core/patch/gb/gb_patch.hpp"
 
 namespace pl {
 

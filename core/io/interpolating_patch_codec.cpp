@@ -1,9 +1,10 @@
 // {"type": "interpolating", "points": [16 points]}: points[i*4+j] is hit at (u,v) = (i/3, j/3).
-#include "core/io/interpolating_patch_codec.hpp"
-
+#include "core/io/patch_codec.hpp"
 #include "core/patch/interpolating_patch.hpp"
 
 namespace pl {
+
+namespace {
 
 std::unique_ptr<Patch> read_interpolating_patch(const JsonNode& node) {
   node.allow_only({"type", "name", "points"});
@@ -15,5 +16,10 @@ std::unique_ptr<Patch> read_interpolating_patch(const JsonNode& node) {
 void write_interpolating_patch(const Patch& patch, nlohmann::json& out) {
   out["points"] = points_json(patch.control_points());
 }
+
+}  // namespace
+
+const PatchCodec kInterpolatingPatchCodec{InterpolatingPatch::kType, read_interpolating_patch,
+                                          write_interpolating_patch};
 
 }  // namespace pl

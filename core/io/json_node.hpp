@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/math/vec.hpp"
 
 namespace pl {

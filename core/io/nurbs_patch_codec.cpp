@@ -1,10 +1,11 @@
 // {"type": "nurbs", ... the keys of "bspline" ..., "weights": [nu*nv positive numbers]}.
-#include "core/io/nurbs_patch_codec.hpp"
-
 #include "core/io/classic_codec_util.hpp"
+#include "core/io/patch_codec.hpp"
 #include "core/patch/nurbs_patch.hpp"
 
 namespace pl {
+
+namespace {
 
 std::unique_ptr<Patch> read_nurbs_patch(const JsonNode& node) {
   node.allow_only({"type", "name", "degree", "size", "knots_u", "knots_v", "points", "weights"});
@@ -25,5 +26,9 @@ void write_nurbs_patch(const Patch& patch, nlohmann::json& out) {
   write_spline_grid(s.grid(), s.control_points(), out);
   out["weights"] = numbers_json(s.weights());
 }
+
+}  // namespace
+
+const PatchCodec kNurbsPatchCodec{NurbsPatch::kType, read_nurbs_patch, write_nurbs_patch};
 
 }  // namespace pl

@@ -1,12 +1,13 @@
 // {"type": "pair-join", "order": 1 | 2, "aux_degree": [d, m], "aux": [(d+1)(m+1) points],
 //  "a": {"b1": [...], "c1": [...], "b2": [...], "c2": [...]}, "b": {...}}: see
 // pair_join_patch.hpp; junction functions are Bernstein coefficients on [0,1].
-#include "core/io/pair_join_codec.hpp"
-
 #include "core/io/classic_codec_util.hpp"
+#include "core/io/patch_codec.hpp"
 #include "core/patch/pair_join_patch.hpp"
 
 namespace pl {
+
+namespace {
 
 namespace {
 JunctionFunctions read_junction(const JsonNode& node, int order) {
@@ -51,5 +52,9 @@ void write_pair_join(const Patch& patch, nlohmann::json& out) {
   out["a"] = junction_json(p.junction(0), p.order());
   out["b"] = junction_json(p.junction(1), p.order());
 }
+
+}  // namespace
+
+const PatchCodec kPairJoinCodec{PairJoinPatch::kType, read_pair_join, write_pair_join};
 
 }  // namespace pl

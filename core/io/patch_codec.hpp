@@ -1,5 +1,7 @@
-// Reading and writing explicit patches of the scene format, one codec per "type".
-// New patch types add a codec in their own file and one line to patch_codecs.cpp.
+// Reading and writing explicit patches of the scene format, one codec per "type": each is defined
+// in its own file (core/io/NAME_codec.cpp) with the type name its patch class carries (kType),
+// declared below, and registered in the one table of patch_codecs.cpp. A new patch type adds a
+// codec file, its line below and its line in the table.
 #pragma once
 
 #include <memory>
@@ -19,6 +21,11 @@ struct PatchCodec {
   // Writes every key except "type" and "name".
   void (*write)(const Patch& patch, nlohmann::json& out);
 };
+
+// The codecs, in the order of the table.
+extern const PatchCodec kBezierPatchCodec, kGBPatchCodec, kGBRibbonPatchCodec, kGregoryQuadCodec,
+    kGregoryTriCodec, kInterpolatingPatchCodec, kHermitePatchCodec, kBSplinePatchCodec,
+    kNurbsPatchCodec, kCoonsNetworkCodec, kPairJoinCodec, kGapFillCodec, kCatmullClarkCodec;
 
 std::span<const PatchCodec> patch_codecs();
 const PatchCodec* find_patch_codec(const std::string& type);

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/io/input_limits.hpp"
 #include "core/io/json_node.hpp"
 

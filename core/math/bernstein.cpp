@@ -5,13 +5,6 @@
 
 namespace pl {
 
-double binomial(int n, int k) {
-  if (k < 0 || k > n) return 0;
-  double r = 1;
-  for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
-  return r;
-}
-
 void bernstein_all(int n, double t, std::span<double> out) {
   assert(static_cast<int>(out.size()) >= n + 1);
   const double s = 1 - t;

@@ -11,7 +11,7 @@ struct CubicBasis {
   std::array<double, 4> d0, d1, d2;  // values, first and second derivatives of the 4 functions
 };
 
-// Rows are the monomial coefficients c0..c3 of the curve: c = M_I p (seed 002).
+// Rows are the monomial coefficients c0..c3 of the curve: c = M_I p (docs/classic-types.md).
 extern const double kInterpolatingMatrix[4][4];
 
 CubicBasis interpolating_basis(double t);

@@ -86,6 +86,21 @@ constexpr Jet operator*(const Jet& a, const Jet& b) {
   return jet_product(a, b);
 }
 
+// The names the lane forms (core/math/lanes.hpp) carry, for Jet: code templated over the jet type
+// (GB blends, polygon parameters) calls these and runs the same operations on either.
+constexpr Jet product(const Jet& a, const Jet& b) {
+  return jet_product(a, b);
+}
+constexpr Jet sum(const Jet& a, const Jet& b) {
+  return a + b;
+}
+constexpr Jet scaled(const Jet& a, double s) {
+  return a * s;
+}
+constexpr void add_to(Jet& a, const Jet& b) {
+  a += b;
+}
+
 // Applies a scalar function g with g(x) = d0, g'(x) = d1, g''(x) = d2 by the chain rule.
 constexpr Jet chain(const Jet& a, double d0, double d1, double d2) {
   return jet_chain(a, d0, d1, d2);

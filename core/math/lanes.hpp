@@ -14,6 +14,7 @@
 #pragma once
 
 #include <atomic>
+#include <type_traits>
 
 #include "core/math/jet.hpp"
 
@@ -89,6 +90,21 @@ PATCHLAB_LANES_INLINE JetLanesOf<V> product(const JetLanesOf<V>& a, const JetLan
   return jet_product(a, b);
 }
 
+// Code written once for one sample (T = double, jets are Jet) and for a block of samples
+// (T = Lane or WideLane, jets are JetLanesOf<T>): JetOf<T> is the jet type, constant_jet<T> a
+// constant, lane(a, b) the jet of sample b; product, sum, scaled, add_to, reciprocal and chain
+// above have Jet forms in jet.hpp, and reciprocal(LinearLanesOf<T>) serves both.
+template <class T>
+struct JetType {
+  using type = JetLanesOf<T>;
+};
+template <>
+struct JetType<double> {
+  using type = Jet;
+};
+template <class T>
+using JetOf = typename JetType<T>::type;
+
 // A function linear in (u, v): value per lane, gradient shared by every lane.
 template <class V>
 struct LinearLanesOf {
@@ -114,9 +130,9 @@ PATCHLAB_LANES_INLINE JetLanesOf<V> reciprocal(const JetLanesOf<V>& a) {
   return chain(a, r, -r * r, 2 * r * r * r);
 }
 
-// 1 / l for a linear l.
+// 1 / l for a linear l (a Jet for V = double).
 template <class V>
-PATCHLAB_LANES_INLINE JetLanesOf<V> reciprocal(const LinearLanesOf<V>& l) {
+PATCHLAB_LANES_INLINE JetOf<V> reciprocal(const LinearLanesOf<V>& l) {
   const V r = 1.0 / l.f, d1 = -r * r, d2 = 2 * r * r * r;
   return {r, d1 * l.fu, d1 * l.fv, d2 * l.fu * l.fu, d2 * l.fu * l.fv, d2 * l.fv * l.fv};
 }
@@ -124,6 +140,25 @@ PATCHLAB_LANES_INLINE JetLanesOf<V> reciprocal(const LinearLanesOf<V>& l) {
 template <class V>
 PATCHLAB_LANES_INLINE Jet lane(const JetLanesOf<V>& a, int b) {
   return {a.f[b], a.fu[b], a.fv[b], a.fuu[b], a.fuv[b], a.fvv[b]};
+}
+
+template <class T>
+PATCHLAB_LANES_INLINE JetOf<T> constant_jet(double c) {
+  if constexpr (std::is_same_v<T, double>)
+    return Jet(c);
+  else
+    return constant_lanes<T>(c);
+}
+
+PATCHLAB_LANES_INLINE Jet lane(const Jet& a, int) {
+  return a;
+}
+
+// A function linear in (u, v) as the jet of one sample (LinearLanesOf<double> is its scalar form).
+template <class T>
+PATCHLAB_LANES_INLINE JetOf<T> linear_jet(const LinearLanesOf<T>& l) {
+  const T z{};
+  return {l.f, z + l.fu, z + l.fv, z, z, z};
 }
 
 }  // namespace pl

@@ -15,6 +15,7 @@ union Scratch {
   T& operator[](int i) { return v[i]; }
   const T& operator[](int i) const { return v[i]; }
   T* data() { return v; }
+  const T* data() const { return v; }
 };
 
 }  // namespace pl

@@ -8,4 +8,10 @@ namespace pl {
 using Vec2 = glm::dvec2;
 using Vec3 = glm::dvec3;
 
+// The z component of the 3D cross product of two plane vectors: twice the signed area of the
+// triangle (0, a, b), positive when b lies to the left of a.
+inline double cross(Vec2 a, Vec2 b) {
+  return a.x * b.y - a.y * b.x;
+}
+
 }  // namespace pl

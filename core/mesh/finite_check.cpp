@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 
 namespace pl {
 

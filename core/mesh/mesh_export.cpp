@@ -12,7 +12,7 @@
 #include <cstring>
 
 #include "core/io/atomic_file.hpp"
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/mesh/finite_check.hpp"
 
 namespace pl {

@@ -1,6 +1,6 @@
 #include "core/network/chiyokura_kimura.hpp"
 
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 
 namespace pl {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "core/network/chiyokura_kimura.hpp"
-#include "core/network/network_filling.hpp"
+#include "core/network/tangent_planes.hpp"
 #include "core/scene/network.hpp"
 
 namespace pl {

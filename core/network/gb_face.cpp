@@ -6,6 +6,7 @@
 #include "core/curve/bezier_curve.hpp"
 #include "core/domain/convex_polygon.hpp"
 #include "core/domain/domain_from_boundary.hpp"
+#include "core/patch/gb/ribbon_elevation.hpp"
 
 namespace pl {
 
@@ -29,12 +30,20 @@ Vec3 unit(Vec3 v) {
 }
 
 // Domain vertex k is the end of face side k; the polygons below list the ends in that order.
+// Where the mean value coordinates of a side's end vertices sum to 0 or less inside the domain
+// (behind a reflex corner: a notch, a U), a cubic ribbon with two layers would have a pole
+// (GBRibbonPatch::sides_without_positive_pair); that side's ribbon gets a third layer, exactly
+// (ribbon_with_layer: same boundary curve, same cross-boundary derivative, so the same G1 join),
+// which makes its blend polynomial in the coordinates.
 std::unique_ptr<GBRibbonPatch> make(const FaceRibbons& r, std::vector<Vec2> vertices) {
+  ConcavePolygonDomain domain(std::move(vertices));
   std::vector<std::vector<std::vector<Vec3>>> ribbons;
   for (const CubicRibbon& s : r.sides)
     ribbons.push_back({std::vector<Vec3>(s.boundary.begin(), s.boundary.end()),
                        std::vector<Vec3>(s.inner.begin(), s.inner.end())});
-  return std::make_unique<GBRibbonPatch>(ConcavePolygonDomain(std::move(vertices)), ribbons);
+  for (int i : GBRibbonPatch::sides_without_positive_pair(domain))
+    ribbons[i] = ribbon_with_layer(ribbons[i]);
+  return std::make_unique<GBRibbonPatch>(std::move(domain), ribbons);
 }
 
 }  // namespace

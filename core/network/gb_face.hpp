@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/network/face_ribbons.hpp"
-#include "core/patch/gb_ribbon_patch.hpp"
+#include "core/patch/gb/gb_ribbon_patch.hpp"
 
 namespace pl {
 

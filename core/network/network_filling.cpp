@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/network/face_ribbons.hpp"
 #include "core/network/gb_face.hpp"
 #include "core/network/gregory_face.hpp"
@@ -17,8 +17,8 @@ std::string face_path(int f) {
 }
 }  // namespace
 
-FacePatch build_face_patch(const Network& network, int face, FaceScheme scheme,
-                           const FaceRibbons& ribbons, const std::string& source) {
+FacePatch build_face_patch(int face, FaceScheme scheme, const FaceRibbons& ribbons,
+                           const std::string& source) {
   FacePatch fp;
   fp.face = face;
   if (scheme == FaceScheme::Gregory) {
@@ -27,9 +27,8 @@ FacePatch build_face_patch(const Network& network, int face, FaceScheme scheme,
     std::iota(fp.patch_side.begin(), fp.patch_side.end(), 0);  // face side i = domain side i
     return fp;
   }
-  // GB faces (issue #4): independent-ribbon GB patch from the same ribbons, over the regular
-  // n-gon (convex faces) or a concave domain; face side i = domain side i.
-  (void)network;
+  // GB faces: the independent-ribbon GB patch from the same ribbons, over the regular n-gon
+  // (convex faces) or a concave domain (core/network/gb_face.hpp); face side i = domain side i.
   try {
     fp.patch = gb_face_patch(ribbons);
   } catch (const std::invalid_argument& e) {
@@ -71,7 +70,7 @@ void check_fillable_near(const Network& network, const NetworkTopology& topology
     std::vector<EdgeCrossTangents> cross(network.edges.size());
     for (int e : face_edges) cross[e] = edge_cross_tangents(network, topology, planes, e);
     for (int f : faces)
-      build_face_patch(network, f, resolve_scheme(network.faces[f], std::nullopt),
+      build_face_patch(f, resolve_scheme(network.faces[f], std::nullopt),
                        face_ribbons(network, topology, cross, f), source);
   } catch (const DataError& e) {
     if (!e.source().empty()) throw;
@@ -92,8 +91,7 @@ NetworkFilling fill_network(const Network& network, const NetworkTopology& topol
     throw DataError(source, e.where(), e.message());  // the construction does not know the file
   }
   for (std::size_t f = 0; f < network.faces.size(); ++f)
-    out.faces.push_back(
-        build_face_patch(network, static_cast<int>(f), schemes[f], ribbons[f], source));
+    out.faces.push_back(build_face_patch(static_cast<int>(f), schemes[f], ribbons[f], source));
   return out;
 }
 

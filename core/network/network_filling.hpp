@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/network/tangent_planes.hpp"
 #include "core/patch/patch.hpp"
 #include "core/scene/network.hpp"
 
@@ -21,11 +22,6 @@ struct FacePatch {
   std::vector<int> patch_side;
 };
 
-struct ProjectedVertex {
-  int vertex = -1;
-  double max_angle_deg = 0;  // largest angle by which an edge end tangent left the plane
-};
-
 struct NetworkFilling {
   std::vector<FacePatch> faces;
   std::vector<ProjectedVertex> projected_vertices;
@@ -36,8 +32,8 @@ struct FaceRibbons;
 // The patch of one face with the given (resolved) scheme from its ribbons: the one place a face
 // becomes a patch, shared by fill_network and the network editor. Throws DataError naming
 // "network.faces[face]" for faces it cannot fill.
-FacePatch build_face_patch(const Network& network, int face, FaceScheme scheme,
-                           const FaceRibbons& ribbons, const std::string& source);
+FacePatch build_face_patch(int face, FaceScheme scheme, const FaceRibbons& ribbons,
+                           const std::string& source);
 
 // Checks that the faces near `vertices` can be filled: the tangent planes at those vertices and
 // at the other ends of their edges, the fields of those edges and the patches of the faces using

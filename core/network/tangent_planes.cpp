@@ -5,7 +5,7 @@
 #include <array>
 #include <cmath>
 
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 
 namespace pl {
 

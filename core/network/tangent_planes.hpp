@@ -6,7 +6,6 @@
 #include <string>
 #include <vector>
 
-#include "core/network/network_filling.hpp"
 #include "core/scene/network.hpp"
 
 namespace pl {
@@ -15,6 +14,12 @@ struct TangentPlane {
   Vec3 normal{0};                 // unit; oriented by the faces' right-hand rule around v
   double max_projection_deg = 0;  // largest angle between an end tangent at v and the plane
   bool defined = false;           // false for vertices no face uses (no plane is needed)
+};
+
+// A vertex whose edge end tangents had to be projected onto its plane (analyze reports it).
+struct ProjectedVertex {
+  int vertex = -1;
+  double max_angle_deg = 0;  // largest angle by which an edge end tangent left the plane
 };
 
 // An end tangent further off its plane than this is reported as projected. Tangents that lie in

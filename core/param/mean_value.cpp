@@ -1,16 +1,17 @@
 #include "core/param/mean_value.hpp"
 
-#include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <vector>
+#include <stdexcept>
+#include <string>
 
 namespace pl {
 
 void mean_value_coordinates(std::span<const Vec2> poly, Vec2 x, std::span<Jet> out) {
+  constexpr int N = MeanValueParameters::kMaxSides;
   const std::size_t n = poly.size();
-  assert(out.size() == n && n >= 3);
-  std::vector<Jet> dx(n), dy(n), r(n), t(n);
+  assert(out.size() == n && n >= 3 && n <= std::size_t(N));
+  Scratch<Jet, N> dx, dy, r, t, area, dot;
   for (std::size_t i = 0; i < n; ++i) {
     dx[i] = Jet(poly[i].x - x.x, -1, 0, 0, 0, 0);
     dy[i] = Jet(poly[i].y - x.y, 0, -1, 0, 0, 0);
@@ -28,7 +29,6 @@ void mean_value_coordinates(std::span<const Vec2> poly, Vec2 x, std::span<Jet> o
     const double d = glm::length(x - (a + s * ab));
     if (d < best) best = d, k = i;
   }
-  std::vector<Jet> area(n), dot(n);
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t j = (i + 1) % n;
     area[i] = dx[i] * dy[j] - dy[i] * dx[j];
@@ -52,6 +52,25 @@ void mean_value_coordinates(std::span<const Vec2> poly, Vec2 x, std::span<Jet> o
   }
   const Jet inv = reciprocal(sum);
   for (std::size_t i = 0; i < n; ++i) out[i] = out[i] * inv;
+}
+
+MeanValueParameters::MeanValueParameters(std::vector<Vec2> vertices)
+    : Parameterization(std::move(vertices)) {
+  if (sides() < 3 || sides() > kMaxSides)
+    throw std::invalid_argument("mean value parameters need 3 to " + std::to_string(kMaxSides) +
+                                " vertices, got " + std::to_string(sides()));
+}
+
+void MeanValueParameters::evaluate(Vec2 x, std::span<Jet> lambda, std::span<Jet> s,
+                                   std::span<Jet> h, SideMask sides) const {
+  const int n = this->sides();
+  Scratch<Jet, kMaxSides> own;
+  const std::span<Jet> lam = lambda.empty() ? std::span<Jet>(own.data(), n) : lambda;
+  mean_value_coordinates(vertices_, x, lam);
+  if (!h.empty()) sums_off_side<kMaxSides + 1>(n, lam.data(), h.data(), sides, Jet(0.0));
+  if (!s.empty())
+    for (int i = 0; i < n; ++i)
+      if (sides >> i & 1u) s[i] = lam[i] / (lam[wrap(i - 1)] + lam[i]);
 }
 
 }  // namespace pl

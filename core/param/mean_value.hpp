@@ -1,5 +1,6 @@
 // Mean value coordinates (Floater 2003; Hormann & Floater 2006 for arbitrary simple polygons)
-// with exact first and second derivatives.
+// with exact first and second derivatives, and the GB local parameters from them
+// (parameterization.hpp).
 //
 // Why these for concave GB domains: Wachspress coordinates have poles over concave polygons;
 // the SMI 2018 concave GB paper uses harmonic coordinates, which have no closed form (the
@@ -9,17 +10,27 @@
 // patch checks for (see gb_ribbon_patch.hpp).
 #pragma once
 
-#include <span>
-
-#include "core/math/jet.hpp"
-#include "core/math/vec.hpp"
+#include "core/param/parameterization.hpp"
 
 namespace pl {
 
-// lambda_i (out[i], one per polygon vertex) at x for a simple polygon (either orientation).
-// x must not be a vertex; on a side (and near it) the weights are rescaled by that side's
-// signed area so the usual 1/0 at the boundary never occurs and the derivatives there are the
-// one-sided limits from the interior.
+// lambda_i (out[i], one per polygon vertex) at x for a simple polygon (either orientation) of at
+// most MeanValueParameters::kMaxSides vertices. x must not be a vertex; on a side (and near
+// it) the weights are rescaled by that side's signed area so the usual 1/0 at the boundary never
+// occurs and the derivatives there are the one-sided limits from the interior. O(n).
 void mean_value_coordinates(std::span<const Vec2> polygon, Vec2 x, std::span<Jet> out);
+
+class MeanValueParameters final : public Parameterization {
+ public:
+  static constexpr int kMaxSides = 64;
+
+  // A simple polygon of 3..kMaxSides vertices; throws std::invalid_argument for another count.
+  explicit MeanValueParameters(std::vector<Vec2> vertices);
+
+  // h_i by sums_off_side (O(n) for all sides); s_i as the plain quotient, which is 0/0 on the
+  // sides away from side i: patches that need it there take lambda instead.
+  void evaluate(Vec2 x, std::span<Jet> lambda, std::span<Jet> s, std::span<Jet> h,
+                SideMask sides = kAllSides) const override;
+};
 
 }  // namespace pl

@@ -12,13 +12,12 @@
 
 namespace pl {
 
-class BezierPatch final : public Patch {
+class BezierPatch final : public PatchType<BezierPatch> {
  public:
+  static constexpr const char* kType = "bezier";  // the scene-format type name
   // Throws std::invalid_argument if degrees < 1 or the point count is not (m+1)(n+1).
   BezierPatch(int m, int n, std::vector<Vec3> points);
 
-  std::unique_ptr<Patch> clone() const override { return std::make_unique<BezierPatch>(*this); }
-  std::string type() const override { return "bezier"; }
   const Domain& domain() const override { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
   void basis(Vec2 x, std::span<Jet> out) const override;

@@ -11,7 +11,7 @@ namespace pl {
 
 BSplinePatch::BSplinePatch(int p, int q, std::vector<double> ku, std::vector<double> kv,
                            std::size_t nu, std::size_t nv, std::vector<Vec3> points)
-    : Patch(std::move(points)), grid_(p, q, std::move(ku), std::move(kv), nu, nv) {
+    : PatchType(std::move(points)), grid_(p, q, std::move(ku), std::move(kv), nu, nv) {
   if (points_.size() != nu * nv)
     throw std::invalid_argument("a " + std::to_string(nu) + " x " + std::to_string(nv) +
                                 " spline patch needs " + std::to_string(nu * nv) + " points, got " +

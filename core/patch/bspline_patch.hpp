@@ -10,14 +10,13 @@
 
 namespace pl {
 
-class BSplinePatch final : public Patch {
+class BSplinePatch final : public PatchType<BSplinePatch> {
  public:
+  static constexpr const char* kType = "bspline";  // the scene-format type name
   // Throws std::invalid_argument for invalid knots or points.size() != nu * nv.
   BSplinePatch(int p, int q, std::vector<double> knots_u, std::vector<double> knots_v,
                std::size_t nu, std::size_t nv, std::vector<Vec3> points);
 
-  std::unique_ptr<Patch> clone() const override { return std::make_unique<BSplinePatch>(*this); }
-  std::string type() const override { return "bspline"; }
   const Domain& domain() const override { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
   void basis(Vec2 x, std::span<Jet> out) const override;

@@ -56,13 +56,14 @@ class CatmullClarkFacePatch final : public Patch {
 
 class CatmullClarkPatch final : public Patch {
  public:
+  static constexpr const char* kType = "catmull-clark";  // the scene-format type name
   // Throws std::invalid_argument for a mesh CatmullClarkLimit refuses.
   CatmullClarkPatch(std::vector<Vec3> vertices, std::vector<std::vector<int>> faces);
 
   std::unique_ptr<Patch> clone() const override {
     return std::make_unique<CatmullClarkPatch>(*this);
   }
-  std::string type() const override { return "catmull-clark"; }
+  std::string type() const override { return kType; }
   const Domain& domain() const override { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
   void basis(Vec2 x, std::span<Jet> out) const override;

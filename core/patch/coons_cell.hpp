@@ -1,5 +1,5 @@
 // One bicubically blended Coons cell of a curve network with non-uniform parameter spacing
-// (seed 004, section 2.3: "surfaces on a non-rectangular network").
+// (Coons surfaces on a non-rectangular network; docs/classic-types.md).
 //
 // The network gives at each node r, r_s, r_t, r_st with respect to the network's own curve
 // parameters s (along rows) and t (along columns). The cell's opposite boundaries may have

@@ -14,7 +14,7 @@ CoonsNetworkPatch::CoonsNetworkPatch(std::size_t ns, std::size_t nt,
                                      std::vector<std::vector<double>> s,
                                      std::vector<std::vector<double>> t, std::vector<Vec3> data,
                                      Lengths lengths)
-    : Patch(std::move(data)),
+    : PatchType(std::move(data)),
       ns_(ns),
       nt_(nt),
       s_(std::move(s)),
@@ -97,12 +97,7 @@ SurfaceJet CoonsNetworkPatch::cell_jet(std::size_t ci, std::size_t cj, Vec2 uv) 
   std::array<Jet, 16> local;
   coons_cell_basis(uv, cell_lengths(ci, cj), local);
   SurfaceJet s;
-  for (int l = 0; l < 16; ++l) {
-    const Jet& w = local[l];
-    const Vec3& c = points_[data_index(ci, cj, l)];
-    s.p += w.f * c, s.su += w.fu * c, s.sv += w.fv * c;
-    s.suu += w.fuu * c, s.suv += w.fuv * c, s.svv += w.fvv * c;
-  }
+  for (int l = 0; l < 16; ++l) add_scaled(s, local[l], points_[data_index(ci, cj, l)]);
   return s;
 }
 

@@ -16,8 +16,9 @@
 
 namespace pl {
 
-class CoonsNetworkPatch final : public Patch {
+class CoonsNetworkPatch final : public PatchType<CoonsNetworkPatch> {
  public:
+  static constexpr const char* kType = "coons-network";  // the scene-format type name
   enum class Lengths { Network, Equal };
 
   // Throws std::invalid_argument for fewer than 2 x 2 nodes, wrong counts, or parameters that
@@ -26,10 +27,6 @@ class CoonsNetworkPatch final : public Patch {
                     std::vector<std::vector<double>> t, std::vector<Vec3> data,
                     Lengths lengths = Lengths::Network);
 
-  std::unique_ptr<Patch> clone() const override {
-    return std::make_unique<CoonsNetworkPatch>(*this);
-  }
-  std::string type() const override { return "coons-network"; }
   const Domain& domain() const override { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
   void basis(Vec2 x, std::span<Jet> out) const override;

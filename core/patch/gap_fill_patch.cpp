@@ -36,7 +36,7 @@ Jet norm_jet(const CurvePoint& c, double scale) {
 }  // namespace
 
 GapFillPatch::GapFillPatch(BSplinePatch q, BSplinePatch r)
-    : Patch(all_points(q, r)),
+    : PatchType(all_points(q, r)),
       q_(std::make_shared<BSplinePatch>(std::move(q))),
       r_(std::make_shared<BSplinePatch>(std::move(r))) {
   const SplineGrid &gq = q_->grid(), &gr = r_->grid();

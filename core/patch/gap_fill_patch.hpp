@@ -1,4 +1,4 @@
-// G1 gap filling between two B-spline patches (seed 003): q over [c,d] x [a,b] and r over
+// G1 gap filling between two B-spline patches: q over [c,d] x [a,b] and r over
 // [e,f] x [a,b] (same v range, v knots may differ). The fill s over [0,1] x [a,b] is cubic
 // Hermite in u between the curves q(d, v) and r(e, v) with cross-boundary derivatives rescaled
 // to the gap width d(v) = |q(d,v) - r(e,v)|:
@@ -22,14 +22,13 @@
 
 namespace pl {
 
-class GapFillPatch final : public Patch {
+class GapFillPatch final : public PatchType<GapFillPatch> {
  public:
+  static constexpr const char* kType = "gap-fill";  // the scene-format type name
   // Throws std::invalid_argument if the v ranges differ, an end is not clamped, or the gap
   // width or a cross derivative vanishes somewhere along the curves.
   GapFillPatch(BSplinePatch q, BSplinePatch r);
 
-  std::unique_ptr<Patch> clone() const override { return std::make_unique<GapFillPatch>(*this); }
-  std::string type() const override { return "gap-fill"; }
   const Domain& domain() const override { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
   void set_control_point(std::size_t k, const Vec3& p) override;

@@ -22,7 +22,7 @@ constexpr int boundary_of(int i, int j) {
 
 }  // namespace
 
-GregoryQuadPatch::GregoryQuadPatch(std::vector<Vec3> points) : Patch(std::move(points)) {
+GregoryQuadPatch::GregoryQuadPatch(std::vector<Vec3> points) : PatchType(std::move(points)) {
   if (points_.size() != kPointCount)
     throw std::invalid_argument("a quadrilateral Gregory patch needs 20 points, got " +
                                 std::to_string(points_.size()));

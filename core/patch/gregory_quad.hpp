@@ -32,8 +32,9 @@
 
 namespace pl {
 
-class GregoryQuadPatch final : public Patch {
+class GregoryQuadPatch final : public PatchType<GregoryQuadPatch> {
  public:
+  static constexpr const char* kType = "gregory-quad";  // the scene-format type name
   static constexpr std::size_t kPointCount = 20;
   // Point j in 0..3 of side s (j = 3 is the next side's start corner).
   static constexpr std::size_t boundary_index(int side, int j) {
@@ -47,10 +48,6 @@ class GregoryQuadPatch final : public Patch {
   // Throws std::invalid_argument unless there are 20 points.
   explicit GregoryQuadPatch(std::vector<Vec3> points);
 
-  std::unique_ptr<Patch> clone() const override {
-    return std::make_unique<GregoryQuadPatch>(*this);
-  }
-  std::string type() const override { return "gregory-quad"; }
   const Domain& domain() const override { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
   void basis(Vec2 x, std::span<Jet> out) const override;

@@ -25,7 +25,7 @@ double multinomial4(int i, int j, int k) {
 
 }  // namespace
 
-GregoryTriPatch::GregoryTriPatch(std::vector<Vec3> points) : Patch(std::move(points)) {
+GregoryTriPatch::GregoryTriPatch(std::vector<Vec3> points) : PatchType(std::move(points)) {
   if (points_.size() != kPointCount)
     throw std::invalid_argument("a triangular Gregory patch needs 18 points, got " +
                                 std::to_string(points_.size()));

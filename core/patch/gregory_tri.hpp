@@ -35,8 +35,9 @@
 
 namespace pl {
 
-class GregoryTriPatch final : public Patch {
+class GregoryTriPatch final : public PatchType<GregoryTriPatch> {
  public:
+  static constexpr const char* kType = "gregory-tri";  // the scene-format type name
   static constexpr std::size_t kPointCount = 18;
   // Point j in 0..4 of side s (j = 4 is the next side's start corner).
   static constexpr std::size_t boundary_index(int side, int j) {
@@ -50,8 +51,6 @@ class GregoryTriPatch final : public Patch {
   // Throws std::invalid_argument unless there are 18 points.
   explicit GregoryTriPatch(std::vector<Vec3> points);
 
-  std::unique_ptr<Patch> clone() const override { return std::make_unique<GregoryTriPatch>(*this); }
-  std::string type() const override { return "gregory-tri"; }
   const Domain& domain() const override { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
   void basis(Vec2 x, std::span<Jet> out) const override;

@@ -8,7 +8,7 @@
 
 namespace pl {
 
-HermitePatch::HermitePatch(std::vector<Vec3> q) : Patch(std::move(q)) {
+HermitePatch::HermitePatch(std::vector<Vec3> q) : PatchType(std::move(q)) {
   if (points_.size() != 16)
     throw std::invalid_argument(
         "a Hermite patch needs 16 corner vectors (r, r_u, r_v, r_uv at 4 corners), got " +

@@ -1,4 +1,4 @@
-// Bicubic Hermite (Ferguson) patch of seed 004: r(u,v) = F(u) Q F(v)^T with
+// Bicubic Hermite (Ferguson) patch: r(u,v) = F(u) Q F(v)^T with
 // F = [alpha0 alpha1 beta0 beta1] and the 4x4 matrix of corner data (points[a*4+b] = Q_ab):
 //   Q = | r(0,0)   r(0,1)   r_v(0,0)  r_v(0,1)  |
 //       | r(1,0)   r(1,1)   r_v(1,0)  r_v(1,1)  |
@@ -12,12 +12,11 @@
 
 namespace pl {
 
-class HermitePatch final : public Patch {
+class HermitePatch final : public PatchType<HermitePatch> {
  public:
-  explicit HermitePatch(std::vector<Vec3> q);  // exactly 16 entries, order above
+  static constexpr const char* kType = "hermite";  // the scene-format type name
+  explicit HermitePatch(std::vector<Vec3> q);      // exactly 16 entries, order above
 
-  std::unique_ptr<Patch> clone() const override { return std::make_unique<HermitePatch>(*this); }
-  std::string type() const override { return "hermite"; }
   const Domain& domain() const override { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
   void basis(Vec2 x, std::span<Jet> out) const override;

@@ -8,7 +8,7 @@
 
 namespace pl {
 
-InterpolatingPatch::InterpolatingPatch(std::vector<Vec3> points) : Patch(std::move(points)) {
+InterpolatingPatch::InterpolatingPatch(std::vector<Vec3> points) : PatchType(std::move(points)) {
   if (points_.size() != 16)
     throw std::invalid_argument("an interpolating patch needs 16 points, got " +
                                 std::to_string(points_.size()));

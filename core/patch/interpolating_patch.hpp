@@ -1,4 +1,4 @@
-// Bicubic interpolating surface of seed 002: through a 4x4 grid of points p_ij at
+// Bicubic interpolating surface: through a 4x4 grid of points p_ij at
 // (u, v) = (i/3, j/3), f(u,v) = [1 u u^2 u^3] M_I P M_I^T [1 v v^2 v^3]^T, p_ij = points[i*4+j].
 #pragma once
 
@@ -7,14 +7,11 @@
 
 namespace pl {
 
-class InterpolatingPatch final : public Patch {
+class InterpolatingPatch final : public PatchType<InterpolatingPatch> {
  public:
+  static constexpr const char* kType = "interpolating";   // the scene-format type name
   explicit InterpolatingPatch(std::vector<Vec3> points);  // exactly 16 points
 
-  std::unique_ptr<Patch> clone() const override {
-    return std::make_unique<InterpolatingPatch>(*this);
-  }
-  std::string type() const override { return "interpolating"; }
   const Domain& domain() const override { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
   void basis(Vec2 x, std::span<Jet> out) const override;

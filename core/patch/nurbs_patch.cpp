@@ -12,7 +12,7 @@ namespace pl {
 
 NurbsPatch::NurbsPatch(int p, int q, std::vector<double> ku, std::vector<double> kv, std::size_t nu,
                        std::size_t nv, std::vector<Vec3> points, std::vector<double> weights)
-    : Patch(std::move(points)),
+    : PatchType(std::move(points)),
       grid_(p, q, std::move(ku), std::move(kv), nu, nv),
       weights_(std::move(weights)) {
   if (points_.size() != nu * nv)

@@ -9,8 +9,9 @@
 
 namespace pl {
 
-class NurbsPatch final : public Patch {
+class NurbsPatch final : public PatchType<NurbsPatch> {
  public:
+  static constexpr const char* kType = "nurbs";  // the scene-format type name
   // Throws std::invalid_argument for invalid knots, counts, or non-positive weights.
   NurbsPatch(int p, int q, std::vector<double> knots_u, std::vector<double> knots_v, std::size_t nu,
              std::size_t nv, std::vector<Vec3> points, std::vector<double> weights);
@@ -21,8 +22,6 @@ class NurbsPatch final : public Patch {
   // Exact cylinder about the z axis: u around (9 points), v along z from z0 to z1 (linear).
   static NurbsPatch cylinder(Vec3 base_center, double radius, double height);
 
-  std::unique_ptr<Patch> clone() const override { return std::make_unique<NurbsPatch>(*this); }
-  std::string type() const override { return "nurbs"; }
   const Domain& domain() const override { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
   void basis(Vec2 x, std::span<Jet> out) const override;

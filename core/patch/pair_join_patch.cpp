@@ -47,7 +47,7 @@ void check_function(const std::vector<double>& f, const char* name, bool require
 
 PairJoinPatch::PairJoinPatch(int order, int du, int dv, std::vector<Vec3> aux, JunctionFunctions a,
                              JunctionFunctions b)
-    : Patch(std::move(aux)),
+    : PatchType(std::move(aux)),
       order_(order),
       du_(du),
       dv_(dv),

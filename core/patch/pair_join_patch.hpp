@@ -1,8 +1,9 @@
-// A G1 or G2 pair of polynomial patches joined along a common boundary (seed 003, "constructing
-// pairs of patches"). An auxiliary Bézier patch p(s, t) of degree (d, m) gives the common curve
-// p(s, 0) and, along it, the tangent plane (G1) and the normal curvatures (G2). Each final patch
-// p* is of degree 5 in u (the edge direction, u = s) and `order` in v, with p*(u, 0) = p(u, 0)
-// degree-elevated and, with its own polynomial junction functions b1, c1 (b2, c2),
+// A G1 or G2 pair of polynomial patches joined along a common boundary (the classic
+// construction of pairs of patches from junction functions; docs/classic-types.md). An auxiliary
+// Bézier patch p(s, t) of degree (d, m) gives the common curve p(s, 0) and, along it, the tangent
+// plane (G1) and the normal curvatures (G2). Each final patch p* is of degree 5 in u (the edge
+// direction, u = s) and `order` in v, with p*(u, 0) = p(u, 0) degree-elevated and, with its own
+// polynomial junction functions b1, c1 (b2, c2),
 //   p*_v  = b1 p_s + c1 p_t,
 //   p*_vv = b2 p_s + c2 p_t + b1^2 p_ss + 2 b1 c1 p_st + c1^2 p_tt          (order 2),
 // i.e. the derivatives of p(s(u,v), t(u,v)) for a reparameterisation with s_v = b1, t_v = c1,
@@ -28,14 +29,13 @@ struct JunctionFunctions {  // Bernstein coefficients on [0,1]
   std::vector<double> b1, c1, b2, c2;
 };
 
-class PairJoinPatch final : public Patch {
+class PairJoinPatch final : public PatchType<PairJoinPatch> {
  public:
+  static constexpr const char* kType = "pair-join";  // the scene-format type name
   // order 1 (G1) or 2 (G2). Throws std::invalid_argument for inconsistent data.
   PairJoinPatch(int order, int aux_degree_u, int aux_degree_v, std::vector<Vec3> aux_points,
                 JunctionFunctions a, JunctionFunctions b);
 
-  std::unique_ptr<Patch> clone() const override { return std::make_unique<PairJoinPatch>(*this); }
-  std::string type() const override { return "pair-join"; }
   const Domain& domain() const override { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
   void set_control_point(std::size_t k, const Vec3& p) override;

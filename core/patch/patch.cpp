@@ -7,16 +7,7 @@ namespace pl {
 SurfaceJet combine(std::span<const Vec3> points, std::span<const Jet> phi) {
   assert(points.size() == phi.size());
   SurfaceJet s;
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    const Jet& w = phi[k];
-    const Vec3& c = points[k];
-    s.p += w.f * c;
-    s.su += w.fu * c;
-    s.sv += w.fv * c;
-    s.suu += w.fuu * c;
-    s.suv += w.fuv * c;
-    s.svv += w.fvv * c;
-  }
+  for (std::size_t k = 0; k < points.size(); ++k) add_scaled(s, phi[k], points[k]);
   return s;
 }
 

@@ -1,4 +1,4 @@
-// The one interface of every patch (architecture note 1): a domain, control points, and a
+// The one interface of every patch: a domain, control points, and a
 // basis with S(x) = sum_k C_k phi_k(x). phi_k may be rational; for fixed weights the surface is
 // linear in the control points, which is what incremental re-evaluation relies on.
 #pragma once
@@ -76,6 +76,20 @@ class Patch {
   Patch& operator=(const Patch&) = default;
 
   std::vector<Vec3> points_;
+};
+
+// The base of a concrete patch class Derived: clone() as a copy, and type() as Derived::kType,
+// the class's scene-format type name, written once (its codec registers under the same).
+template <class Derived>
+class PatchType : public Patch {
+ public:
+  std::unique_ptr<Patch> clone() const final {
+    return std::make_unique<Derived>(static_cast<const Derived&>(*this));
+  }
+  std::string type() const final { return Derived::kType; }
+
+ protected:
+  using Patch::Patch;
 };
 
 // Sum of C_k phi_k: the reference evaluation used by the default evaluate() and by tests.

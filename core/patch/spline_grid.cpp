@@ -42,12 +42,8 @@ SurfaceJet SplineGrid::combine(const Local& l, const std::vector<Vec3>& points) 
   SurfaceJet s;
   s.p = ref;
   for (int a = 0; a <= p(); ++a)
-    for (int b = 0; b <= q(); ++b) {
-      const Jet& w = l.phi[a * (q() + 1) + b];
-      const Vec3 c = points[(l.i0 + a) * nv() + l.j0 + b] - ref;
-      s.p += w.f * c, s.su += w.fu * c, s.sv += w.fv * c;
-      s.suu += w.fuu * c, s.suv += w.fuv * c, s.svv += w.fvv * c;
-    }
+    for (int b = 0; b <= q(); ++b)
+      add_scaled(s, l.phi[a * (q() + 1) + b], points[(l.i0 + a) * nv() + l.j0 + b] - ref);
   return s;
 }
 

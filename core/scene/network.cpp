@@ -4,7 +4,7 @@
 #include <map>
 #include <set>
 
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 
 namespace pl {
 

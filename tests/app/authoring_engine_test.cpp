@@ -9,7 +9,7 @@
 #include "app/document/document.hpp"
 #include "app/document/network_commands.hpp"
 #include "cli_test_util.hpp"
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/io/scene_io.hpp"
 #include "core/network/network_filling.hpp"
 #include "core/network/sample_networks.hpp"

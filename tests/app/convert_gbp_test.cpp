@@ -10,12 +10,12 @@ namespace pl::test {
 namespace {
 
 std::filesystem::path reference(const std::string& name) {
-  return std::filesystem::path(PATCHLAB_SHARED_DIR) / "reference" / "gb" / (name + ".gbp");
+  return std::filesystem::path(PATCHLAB_TEST_DATA_DIR) / "gb" / (name + ".gbp");
 }
 
 TEST(ConvertGbp, ReferenceModelsRoundTripBitExact) {
-  if (!std::filesystem::exists(reference("cagd86")))
-    GTEST_SKIP() << "GB reference folder is missing: " << reference("cagd86").parent_path();
+  ASSERT_TRUE(std::filesystem::exists(reference("cagd86")))
+      << "GB reference folder is missing: " << reference("cagd86").parent_path();
   TempDir dir;
   for (const char* name : {"cagd86", "tp4-d3", "tp4-d6", "dome3-d3", "dome6-d4", "dome7-d3"}) {
     const GBPatch original = read_gbp(reference(name));
@@ -49,7 +49,7 @@ TEST(ConvertGbp, ReferenceModelsRoundTripBitExact) {
 }
 
 TEST(ConvertGbp, GbpIsAnInputOfExportAndAnalyze) {
-  if (!std::filesystem::exists(reference("cagd86"))) GTEST_SKIP() << "GB reference missing";
+  ASSERT_TRUE(std::filesystem::exists(reference("cagd86"))) << "GB reference missing";
   TempDir dir;
   const auto obj = dir / "out.obj";
   auto r = cli({"export", reference("cagd86").string(), "-o", obj.string(), "--density", "8"});

@@ -12,7 +12,7 @@
 #include "app/editor/logic/live_surfaces.hpp"
 #include "app/editor/logic/status_line.hpp"
 #include "cli_test_util.hpp"
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/io/scene_io.hpp"
 
 namespace pl {

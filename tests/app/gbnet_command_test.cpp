@@ -6,8 +6,8 @@
 
 #include "cli_test_util.hpp"
 #include "core/io/gbp_io.hpp"
-#include "core/patch/gb_default_net.hpp"
-#include "core/patch/gb_elevation.hpp"
+#include "core/patch/gb/default_net.hpp"
+#include "core/patch/gb/elevation.hpp"
 
 namespace pl::test {
 namespace {
@@ -89,7 +89,7 @@ TEST(GbnetCommand, UsageAndDataErrors) {
   EXPECT_NE(r.err.find("degree 4 cannot be elevated 17 times"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(out));
   EXPECT_EQ(cli({"gbnet", (dir / "missing.gbp").string(), "-o", out, "--elevate", "1"}).code, 1);
-  // Degree 1 has nothing to elevate from (core/patch/gb_elevation.hpp).
+  // Degree 1 has nothing to elevate from (core/patch/gb/elevation.hpp).
   write_gbp(dir / "linear.gbp", lifted_planar_net(1));
   const auto r1 = cli({"gbnet", (dir / "linear.gbp").string(), "-o", out, "--elevate", "1"});
   EXPECT_EQ(r1.code, 1);

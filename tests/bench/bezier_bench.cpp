@@ -7,7 +7,7 @@
 #include "bench_patches.hpp"
 #include "core/domain/unit_square.hpp"
 #include "core/eval/patch_evaluator.hpp"
-#include "core/parallel/parallel_for.hpp"
+#include "core/base/parallel_for.hpp"
 #include "core/patch/bezier_patch.hpp"
 
 namespace pl::bench {

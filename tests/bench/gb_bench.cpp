@@ -1,4 +1,4 @@
-// Figures of the GB issue: full evaluation of cagd86 (5 sides, degree 5) with second
+// GB figures: full evaluation of cagd86 (5 sides, degree 5) with second
 // derivatives, normals and curvatures; the drag update at ~1e5 samples with its influence column
 // prepared; the one-off column build at ~1e6 samples. The evaluation and the drag are measured
 // with one core held busy by another process too (*_busy, and their ratios to the quiet figures).
@@ -7,29 +7,16 @@
 
 #include "bench_common.hpp"
 #include "bench_patches.hpp"
+#include "core/base/parallel_for.hpp"
 #include "core/eval/patch_evaluator.hpp"
 #include "core/io/gbp_io.hpp"
-#include "core/parallel/parallel_for.hpp"
 
 namespace pl::bench {
 
+// The reference model cagd86 (5 sides, degree 5) from the repository's test data.
 std::shared_ptr<GBPatch> cagd86() {
-#ifdef PATCHLAB_SHARED_DIR
-  const auto file = std::filesystem::path(PATCHLAB_SHARED_DIR) / "reference/gb/cagd86.gbp";
-  if (std::filesystem::exists(file)) return std::make_shared<GBPatch>(read_gbp(file));
-#endif
-  // Without the shared folder: a net of the same shape (5 sides, degree 5) on a dome.
-  std::printf("# cagd86.gbp not found: using a synthetic 5-sided degree-5 net\n");
-  std::vector<Vec3> p(GBPatch::point_count(5, 5), Vec3(0, 0, 3));
-  GBPatch shape(5, 5, p);
-  for (int k = 0; k < 3; ++k)
-    for (int i = 0; i < 5; ++i)
-      for (int j = k; j <= 4 - k; ++j) {
-        const Vec2 a = shape.polygon().vertex(i - 1), b = shape.polygon().vertex(i);
-        const Vec2 q = (a + (j / 5.0) * (b - a)) * (1 - 0.2 * k);
-        p[shape.index(i, j, k)] = {10 * q.x, 10 * q.y, 1.0 * k};
-      }
-  return std::make_shared<GBPatch>(5, 5, std::move(p));
+  const auto file = std::filesystem::path(PATCHLAB_TEST_DATA_DIR) / "gb" / "cagd86.gbp";
+  return std::make_shared<GBPatch>(read_gbp(file));  // throws (the program fails) if it is missing
 }
 
 namespace {

@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
       only.append(",").append(argv[++i]).append(",");
     } else {
       std::fprintf(stderr,
-                   "usage: patchlab_bench [--quick] [--grains] [--only bezier,gb,engine,"
+                   "usage: patchlab_bench [--quick] [--grains] [--only bezier,gb,gb_face,engine,"
                    "catmull_clark,cad]\n");
       return 2;
     }
@@ -38,6 +38,7 @@ int main(int argc, char** argv) {
   }
   run("bezier", pl::bench::bench_bezier);
   run("gb", pl::bench::bench_gb);
+  run("gb_face", pl::bench::bench_gb_face);
   run("engine", pl::bench::bench_engine);
   run("catmull_clark", pl::bench::bench_catmull_clark);
   run("cad", pl::bench::bench_cad);

@@ -12,7 +12,7 @@
 #include "core/cad/side_matching.hpp"
 #include "core/cad/spline_fit.hpp"
 #include "core/domain/convex_polygon.hpp"
-#include "core/patch/gb_patch.hpp"
+#include "core/patch/gb/gb_patch.hpp"
 
 namespace pl {
 namespace {

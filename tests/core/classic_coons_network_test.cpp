@@ -1,4 +1,4 @@
-// Coons cells on a non-uniform, non-rectangular network (seed 004, section 2.3): G1 across every
+// Coons cells on a non-uniform, non-rectangular network: G1 across every
 // internal edge, exact reproduction of bicubics on unequal spacing, and the difference from the
 // equal-length construction.
 #include <gtest/gtest.h>

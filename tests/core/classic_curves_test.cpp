@@ -1,4 +1,4 @@
-// Classic curves of seed 002: interpolating cubic, Hermite, B-spline (de Boor, knot insertion)
+// Classic curves: interpolating cubic, Hermite, B-spline (de Boor, knot insertion)
 // and NURBS (exact circle), each checked against an independent computation.
 #include <gtest/gtest.h>
 

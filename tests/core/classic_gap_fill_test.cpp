@@ -1,5 +1,5 @@
 // G1 gap filling between two bicubic B-spline patches with cross-boundary derivatives rescaled
-// by d(v) / |q_u(v)| (seed 003).
+// by d(v) / |q_u(v)|.
 #include <gtest/gtest.h>
 
 #include <cmath>

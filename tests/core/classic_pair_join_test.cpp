@@ -1,4 +1,4 @@
-// G1 and G2 pairs of degree-5 patches from an auxiliary patch and junction functions (seed 003),
+// G1 and G2 pairs of degree-5 patches from an auxiliary patch and junction functions,
 // checked along the junction against the auxiliary patch and each other.
 #include <gtest/gtest.h>
 

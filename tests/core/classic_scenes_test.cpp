@@ -7,7 +7,7 @@
 
 #include "core/domain/tessellation_cache.hpp"
 #include "core/eval/scene_surfaces.hpp"
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/io/scene_io.hpp"
 #include "test_util.hpp"
 

@@ -1,9 +1,9 @@
 // The gb-ribbons scene type: round trip, and DataErrors naming the patch for bad data.
 #include <gtest/gtest.h>
 
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/io/scene_io.hpp"
-#include "core/patch/gb_ribbon_patch.hpp"
+#include "core/patch/gb/gb_ribbon_patch.hpp"
 
 namespace pl {
 namespace {

@@ -3,12 +3,13 @@
 // samples everywhere, incremental drags against full re-evaluation.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
 #include "core/eval/patch_evaluator.hpp"
 #include "core/math/bernstein.hpp"
-#include "core/patch/gb_ribbon_patch.hpp"
+#include "core/patch/gb/gb_ribbon_patch.hpp"
 
 namespace pl {
 namespace {
@@ -158,8 +159,41 @@ TEST(ConcaveGBPatch, SideSamplesAreInteriorLimits) {
   }
 }
 
+// Ribbons with d > l have a pole where lambda_{i-1} + lambda_i vanishes; with as many layers as
+// their degree they have none, and the patch over the same U is finite. A comb, where the
+// distance parameter of some sides does not grow into the domain, is refused whatever the
+// layers.
 TEST(ConcaveGBPatch, RefusesDomainsWhereMeanValueCoordinatesFail) {
   EXPECT_THROW(make_patch(kU, 1), std::invalid_argument);
+  const ConcavePolygonDomain dom(kU);
+  const auto poles = GBRibbonPatch::sides_without_positive_pair(dom);
+  ASSERT_FALSE(poles.empty());
+  std::vector<std::vector<std::vector<Vec3>>> ribbons(dom.side_count());
+  for (int i = 0; i < dom.side_count(); ++i) {
+    const bool pole = std::find(poles.begin(), poles.end(), i) != poles.end();
+    const Vec2 e = dom.vertex(i) - dom.vertex(i - 1), inward = Vec2(-e.y, e.x) / glm::length(e);
+    for (int k = 0; k < (pole ? 3 : 2); ++k) {
+      std::vector<Vec3> row;
+      for (int j = 0; j <= 3; ++j)
+        row.push_back(lift(dom.side_point(i, j / 3.0) + 0.15 * k * inward));
+      ribbons[i].push_back(row);
+    }
+  }
+  const GBRibbonPatch layered(dom, ribbons);
+  for (const Vec2& x : dom.tessellate(24).points) {
+    const SurfaceJet s = layered.evaluate(x);
+    ASSERT_TRUE(std::isfinite(s.p.z + s.suu.z + s.suv.z + s.svv.z)) << x.x << " " << x.y;
+  }
+  const std::vector<Vec2> comb = {
+      {0, 0},     {4, 0},     {4, 2},   {3.6, 2}, {3.6, 0.5}, {3.2, 0.5}, {3.2, 2}, {2.2, 2},
+      {2.2, 0.5}, {1.8, 0.5}, {1.8, 2}, {0.8, 2}, {0.8, 0.5}, {0.4, 0.5}, {0.4, 2}, {0, 2}};
+  try {
+    make_patch(comb, 1, false);
+    FAIL() << "expected the comb to be refused";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("does not grow into the domain"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(ConcaveGBPatch, NoNonFiniteSamples) {

@@ -11,7 +11,7 @@
 #include "core/io/scene_io.hpp"
 #include "core/patch/bezier_patch.hpp"
 #include "core/patch/coons_network_patch.hpp"
-#include "core/patch/gb_patch.hpp"
+#include "core/patch/gb/gb_patch.hpp"
 #include "core/patch/gregory_quad.hpp"
 #include "core/patch/gregory_tri.hpp"
 #include "core/patch/hermite_patch.hpp"

@@ -1,8 +1,6 @@
-// Default control nets of the convex GB patch (core/patch/gb_default_net.hpp), and planar
+// Default control nets of the convex GB patch (core/patch/gb/default_net.hpp), and planar
 // reproduction of GB nets, checked against independent computations: the plane equation,
 // tensor-product Bézier nets built from closed-form Coons-type surfaces, BezierPatch evaluation.
-#include "core/patch/gb_default_net.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +10,7 @@
 #include <string>
 
 #include "core/patch/bezier_patch.hpp"
+#include "core/patch/gb/default_net.hpp"
 #include "gb_domain_samples.hpp"
 #include "gb_test_util.hpp"
 #include "test_util.hpp"
@@ -223,8 +222,8 @@ TEST(GBDefaultNet, CubicCentreIsTheMeanOfTheParallelogramTwists) {
 }
 
 TEST(GBDefaultNet, ReferenceModelsFromRings0And1) {
-  // The figures gb_default_net.hpp quotes: the default surface from rings 0 and 1 of each
-  // designed reference net against that net's samples (transfinite's evaluations of the
+  // The figures core/patch/gb/default_net.hpp quotes: the default surface from rings 0 and 1 of
+  // each designed reference net against that net's samples (transfinite's evaluations of the
   // designed surface), largest distance relative to the net's diagonal.
   PATCHLAB_REQUIRE_GB_REFERENCE();
   // The quoted figures, rounded up in their last digit (tp4-d3: nothing with weight defaulted,
@@ -286,7 +285,7 @@ TEST(GBDefaultNet, FiniteForEverySideCountAndDegree) {
       }
 }
 
-// Acceptance item of issue #4: a GB patch whose control points all lie on a plane is that plane,
+// A GB patch whose control points all lie on a plane is that plane,
 // at corners, sides, the centre and inside, with the plane's normal.
 TEST(GBPatchPlanar, RandomPlanarNetsAreThePlane) {
   double worst_sample = 0, worst_angle = 0;

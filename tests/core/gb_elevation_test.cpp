@@ -1,8 +1,6 @@
-// Degree elevation of the convex GB patch (core/patch/gb_elevation.hpp): whether an exact
+// Degree elevation of the convex GB patch (core/patch/gb/elevation.hpp): whether an exact
 // elevation exists (least squares over the basis functions), exactness for n = 4 against an
 // independent tensor-product elevation, and what is kept for every n (boundary, tangent planes).
-#include "core/patch/gb_elevation.hpp"
-
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -11,7 +9,8 @@
 #include <memory>
 #include <string>
 
-#include "core/patch/gb_default_net.hpp"
+#include "core/patch/gb/default_net.hpp"
+#include "core/patch/gb/elevation.hpp"
 #include "gb_domain_samples.hpp"
 #include "gb_test_util.hpp"
 #include "test_util.hpp"
@@ -51,7 +50,7 @@ Floor elevation_floor(int n, int d, const std::vector<Vec2>& xs) {
 }
 
 TEST(GBElevation, ExactElevationExistsOnlyForFourSides) {
-  // The table gb_elevation.hpp and docs/patch-types.md quote.
+  // The table core/patch/gb/elevation.hpp and docs/patch-types.md quote.
   double lo = 1, hi = 0, worst_conditioning = 0, worst_n4 = 0;
   for (int n : {3, 4, 5, 6, 7})
     for (int d = 2; d <= 7; ++d) {
@@ -300,7 +299,7 @@ TEST(GBElevation, PassesThroughTheOldCentrePoint) {
 TEST(GBElevation, InteriorDeviationAndTheCentralPointRule) {
   // For n != 4 the interior moves. How far (relative to the net's diagonal, over interior and
   // side samples), and the same with the two other rules for the new C_0 we considered: keeping
-  // the old C_0, and the default-net rule 4 (core/patch/gb_default_net.hpp).
+  // the old C_0, and the default-net rule 4 (core/patch/gb/default_net.hpp).
   double lo = 1, hi = 0;
   int ours_best = 0, cases = 0;
   for (int n : {3, 5, 6, 7, 8})
@@ -329,8 +328,9 @@ TEST(GBElevation, InteriorDeviationAndTheCentralPointRule) {
       hi = std::max(hi, dev[0]);
       ++cases;
       ours_best += dev[0] <= dev[1] && dev[0] <= dev[2];
-      // gb_elevation.hpp, docs/patch-types.md: the interior moves by 0.1 .. 3.3 % of the net's
-      // diagonal; the centre rule is never more than 5 % worse than the better of the other two.
+      // core/patch/gb/elevation.hpp, docs/patch-types.md: the interior moves by 0.1 .. 3.3 % of the
+      // net's diagonal; the centre rule is never more than 5 % worse than the better of the other
+      // two.
       EXPECT_GT(dev[0], 1e-3) << "n=" << n << " d=" << d;
       EXPECT_LT(dev[0], 3.3e-2) << "n=" << n << " d=" << d;
       EXPECT_LT(dev[0], 1.05 * std::min(dev[1], dev[2])) << "n=" << n << " d=" << d;

@@ -4,7 +4,7 @@
 #include <cstring>
 #include <nlohmann/json.hpp>
 
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/io/input_limits.hpp"
 #include "core/io/scene_io.hpp"
 #include "gb_test_util.hpp"

@@ -1,12 +1,14 @@
 // The building blocks of GB patches: Bernstein tables and the polygon's local parameters
-// (Wachspress coordinates, s_i, h_i) against their defining properties and finite differences.
+// (Wachspress and mean value coordinates, s_i, h_i) against their defining properties and
+// finite differences.
 #include <gtest/gtest.h>
 
 #include <random>
 
 #include "core/domain/convex_polygon.hpp"
 #include "core/math/bernstein_jets.hpp"
-#include "core/param/polygon_parameters.hpp"
+#include "core/param/mean_value.hpp"
+#include "core/param/wachspress.hpp"
 
 namespace pl {
 namespace {
@@ -29,58 +31,114 @@ TEST(GBParam, BernsteinTableMatchesBernsteinAll) {
     }
 }
 
-TEST(GBParam, WachspressPropertiesAndSideParameters) {
-  std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> r(-1, 1);
-  for (int n = 3; n <= 12; ++n) {
-    const auto dom = ConvexPolygonDomain::regular(n);
-    const PolygonParameters par(dom.vertices());
-    std::vector<Jet> lam(n), s(n), h(n);
-    for (int trial = 0; trial < 200; ++trial) {
-      const Vec2 x(r(rng), r(rng));
-      if (glm::length(x) > 0.45) continue;  // inside the incircle of every regular polygon
-      par.evaluate(x, lam, s, h);
-      Jet sum;
-      Vec2 rep(0);
-      for (int i = 0; i < n; ++i) {
-        sum += lam[i];
-        rep += lam[i].f * dom.vertex(i);
+// The properties every parameterization has (parameterization.hpp), through the interface:
+// partition of unity, linear reproduction, s_i and h_i against their definitions, second
+// derivatives against differences of the first, the Lagrange property at the vertices and
+// s_i = t, h_i = 0 along side i. xs: interior points; positive: the coordinates are > 0 there.
+void check_parameterization(const Parameterization& par, const std::vector<Vec2>& xs,
+                            bool positive) {
+  const int n = par.sides();
+  std::vector<Jet> lam(n), s(n), h(n);
+  for (const Vec2& x : xs) {
+    par.evaluate(x, lam, s, h);
+    Jet sum;
+    Vec2 rep(0);
+    for (int i = 0; i < n; ++i) {
+      sum += lam[i];
+      rep += lam[i].f * par.vertex(i);
+      if (positive) {
         EXPECT_GT(lam[i].f, 0);
       }
-      EXPECT_NEAR(sum.f, 1, 1e-14);  // partition of unity, with vanishing derivatives
-      EXPECT_NEAR(sum.fu, 0, 1e-13);
-      EXPECT_NEAR(sum.fuv, 0, 1e-12);
-      EXPECT_NEAR(rep.x, x.x, 1e-14);  // linear reproduction
-      EXPECT_NEAR(rep.y, x.y, 1e-14);
-      for (int i = 0; i < n; ++i) {
-        const Jet& a = lam[(i + n - 1) % n];
-        const Jet& b = lam[i];
-        const Jet s_def = b / (a + b);  // the definition, fine away from the far sides
-        EXPECT_NEAR(s[i].f, s_def.f, 1e-12);
-        EXPECT_NEAR(s[i].fu, s_def.fu, 1e-10 * (1 + std::fabs(s_def.fu)));
-        EXPECT_NEAR(s[i].fvv, s_def.fvv, 1e-9 * (1 + std::fabs(s_def.fvv)));
-        EXPECT_NEAR(h[i].f, 1 - a.f - b.f, 1e-14);
-        EXPECT_NEAR(h[i].fuu, -a.fuu - b.fuu, 1e-11);
-      }
-      // Second derivatives of lambda_0 against central differences of the first ones.
-      const double e = 1e-6;
-      std::vector<Jet> lp(n), lm(n);
-      par.evaluate(x + Vec2(e, 0), lp, {}, {});
-      par.evaluate(x - Vec2(e, 0), lm, {}, {});
-      EXPECT_NEAR(lam[0].fuu, (lp[0].fu - lm[0].fu) / (2 * e), 1e-6);
-      EXPECT_NEAR(lam[0].fuv, (lp[0].fv - lm[0].fv) / (2 * e), 1e-6);
-      EXPECT_NEAR(lam[0].fu, (lp[0].f - lm[0].f) / (2 * e), 1e-8);
     }
-    // Lagrange property at the vertices; s_i runs 0..1 along side i; h_i = 0 on it.
+    EXPECT_NEAR(sum.f, 1, 1e-14);  // partition of unity, with vanishing derivatives
+    EXPECT_NEAR(sum.fu, 0, 1e-13);
+    EXPECT_NEAR(sum.fuv, 0, 1e-12);
+    EXPECT_NEAR(rep.x, x.x, 1e-14);  // linear reproduction
+    EXPECT_NEAR(rep.y, x.y, 1e-14);
+    for (int i = 0; i < n; ++i) {
+      const Jet& a = lam[(i + n - 1) % n];
+      const Jet& b = lam[i];
+      const Jet s_def = b / (a + b);  // the definition, fine away from the far sides
+      EXPECT_NEAR(s[i].f, s_def.f, 1e-12);
+      EXPECT_NEAR(s[i].fu, s_def.fu, 1e-10 * (1 + std::fabs(s_def.fu)));
+      EXPECT_NEAR(s[i].fvv, s_def.fvv, 1e-9 * (1 + std::fabs(s_def.fvv)));
+      EXPECT_NEAR(h[i].f, 1 - a.f - b.f, 1e-14);
+      EXPECT_NEAR(h[i].fuu, -a.fuu - b.fuu, 1e-11);
+    }
+    // Second derivatives of lambda_0 against central differences of the first ones.
+    const double e = 1e-6;
+    std::vector<Jet> lp(n), lm(n);
+    par.evaluate(x + Vec2(e, 0), lp, {}, {});
+    par.evaluate(x - Vec2(e, 0), lm, {}, {});
+    EXPECT_NEAR(lam[0].fuu, (lp[0].fu - lm[0].fu) / (2 * e), 1e-6);
+    EXPECT_NEAR(lam[0].fuv, (lp[0].fv - lm[0].fv) / (2 * e), 1e-6);
+    EXPECT_NEAR(lam[0].fu, (lp[0].f - lm[0].f) / (2 * e), 1e-8);
+  }
+  // Lagrange property next to the vertices (exactly at them for Wachspress); s_i runs 0..1
+  // along side i; h_i = 0 on it.
+  for (int i = 0; i < n; ++i) {
+    const Vec2 near = par.vertex(i) + 1e-13 * (par.vertex(i + 1) - par.vertex(i));
+    par.evaluate(near, lam, {}, {});
+    for (int j = 0; j < n; ++j) EXPECT_NEAR(lam[j].f, i == j ? 1.0 : 0.0, 1e-12);
+    for (double t : {0.1, 0.5, 0.9}) {
+      par.evaluate((1 - t) * par.vertex(i - 1) + t * par.vertex(i), {}, s, h);
+      EXPECT_NEAR(s[i].f, t, 1e-14);
+      EXPECT_NEAR(h[i].f, 0, 1e-15);
+      EXPECT_TRUE(std::isfinite(s[i].f + s[i].fuu + s[i].fvv));
+    }
+  }
+}
+
+std::vector<Vec2> random_points(std::size_t count, double radius, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> r(-1, 1);
+  std::vector<Vec2> xs;
+  while (xs.size() < count) {
+    const Vec2 x(r(rng), r(rng));
+    if (glm::length(x) < radius) xs.push_back(x);
+  }
+  return xs;
+}
+
+TEST(GBParam, WachspressPropertiesAndSideParameters) {
+  for (int n = 3; n <= 12; ++n) {
+    const auto dom = ConvexPolygonDomain::regular(n);
+    // Inside the incircle of every regular polygon.
+    check_parameterization(WachspressParameters(dom.vertices()), random_points(100, 0.45, 5 + n),
+                           true);
+    // Exactly at a vertex the product form is still defined: Lagrange there too.
+    const WachspressParameters par(dom.vertices());
+    std::vector<Jet> lam(n);
     for (int i = 0; i < n; ++i) {
       par.evaluate(dom.vertex(i), lam, {}, {});
       for (int j = 0; j < n; ++j) EXPECT_NEAR(lam[j].f, i == j ? 1.0 : 0.0, 1e-15);
-      for (double t : {0.1, 0.5, 0.9}) {
-        par.evaluate(dom.side_point(i, t), {}, s, h);
-        EXPECT_NEAR(s[i].f, t, 1e-14);
-        EXPECT_NEAR(h[i].f, 0, 1e-15);
-        for (int j = 0; j < n; ++j) EXPECT_TRUE(std::isfinite(s[j].f + s[j].fuu + s[j].fvv));
-      }
+    }
+  }
+}
+
+TEST(GBParam, MeanValuePropertiesAndSideParameters) {
+  for (int n = 3; n <= 12; ++n)  // convex: positive coordinates (Floater 2003)
+    check_parameterization(MeanValueParameters(ConvexPolygonDomain::regular(n).vertices()),
+                           random_points(100, 0.45, 7 + n), true);
+  // An L shape (concave): the coordinates may be negative behind the reflex vertex.
+  const std::vector<Vec2> L = {{-1, -1}, {1, -1}, {1, 0}, {0, 0}, {0, 1}, {-1, 1}};
+  std::vector<Vec2> xs;
+  for (const Vec2& x : random_points(400, 2, 11))
+    if ((x.x < -0.05 || x.y < -0.05) && x.x > -0.95 && x.x < 0.95 && x.y > -0.95 && x.y < 0.95)
+      xs.push_back(x);
+  check_parameterization(MeanValueParameters(L), xs, false);
+}
+
+TEST(GBParam, SumsOffSideLeaveOutTheSidesEnds) {
+  for (int n = 3; n <= 9; ++n) {
+    std::vector<Jet> v(n), out(n);
+    for (int j = 0; j < n; ++j) v[j] = Jet(std::ldexp(1.0, j));  // sums are exact and unique
+    sums_off_side<16>(n, v.data(), out.data(), kAllSides, Jet(0.0));
+    for (int i = 0; i < n; ++i) {
+      double expected = 0;
+      for (int j = 0; j < n; ++j)
+        if (j != i && j != (i + n - 1) % n) expected += v[j].f;
+      EXPECT_EQ(out[i].f, expected) << n << " " << i;
     }
   }
 }

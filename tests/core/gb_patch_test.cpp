@@ -308,9 +308,10 @@ TEST(GBPatch, IncrementalDragEqualsFullEvaluation) {
 namespace pl {
 namespace {
 
-// evaluate() and influence() run on tables derived from the control points (evaluate_regular's
-// dense per-ribbon rows, the corner-weight masks of influence): after edits of every kind of
-// point (central, boundary, shared corner block, inner) they must still equal the basis sum.
+// evaluate() and influence() run on tables derived from the control points (the per-group
+// ribbon rows of core/patch/gb/ribbon.hpp, the corner-weight masks of influence): after edits of
+// every kind of point (central, boundary, shared corner block, inner) they must still equal the
+// basis sum.
 TEST(GBPatch, FastPathsFollowControlPointEdits) {
   for (int n : {3, 5, 6})
     for (int d : {2, 3, 5, 6}) {

@@ -1,5 +1,5 @@
 // The GB patch against the independent reference evaluations (transfinite) in
-// ../shared/reference/gb: every sample to 1e-12 of the model's size, domain vertices bit for bit.
+// tests/data/gb: every sample to 1e-12 of the model's size, domain vertices bit for bit.
 #include <gtest/gtest.h>
 
 #include "gb_test_util.hpp"

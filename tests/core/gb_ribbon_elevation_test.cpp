@@ -1,15 +1,14 @@
 // Edgewise elevation and layer addition of one ribbon of a GB patch with independent ribbons
-// (core/patch/gb_ribbon_elevation.hpp): the boundary curves, the surface along every side and its
+// (core/patch/gb/ribbon_elevation.hpp): the boundary curves, the surface along every side and its
 // first derivatives there are kept (against the original patch); the interior change is measured.
-#include "core/patch/gb_ribbon_elevation.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <random>
 
-#include "core/io/gb_ribbon_patch_codec.hpp"
+#include "core/io/patch_codec.hpp"
+#include "core/patch/gb/ribbon_elevation.hpp"
 #include "gb_test_util.hpp"
 #include "test_util.hpp"
 
@@ -153,8 +152,8 @@ TEST(GBRibbonElevation, StopsAtTheFormatsLimits) {
   EXPECT_EQ(gb_ribbon_add_layer(g, 0).layers(0), g.layers(0) + 1);
   // Round trip through the codec at the limits.
   nlohmann::json j;
-  write_gb_ribbon_patch(g, j);
-  const auto back = read_gb_ribbon_patch(JsonNode(j, "mem.json"));
+  kGBRibbonPatchCodec.write(g, j);
+  const auto back = kGBRibbonPatchCodec.read(JsonNode(j, "mem.json"));
   EXPECT_EQ(back->control_points(), g.control_points());
 }
 

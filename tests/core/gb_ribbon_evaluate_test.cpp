@@ -16,7 +16,7 @@
 #include "core/math/bernstein.hpp"
 #include "core/math/jet.hpp"
 #include "core/param/mean_value.hpp"
-#include "core/patch/gb_ribbon_patch.hpp"
+#include "core/patch/gb/gb_ribbon_patch.hpp"
 
 namespace pl {
 namespace {
@@ -45,11 +45,15 @@ std::vector<Vec2> star(int points) {
 GBRibbonPatch make_patch(const std::vector<Vec2>& poly, int d0, int l1) {
   const ConcavePolygonDomain dom(poly);
   const int n = dom.side_count();
+  // Sides where the mean value coordinates would give a ribbon with d > l a pole (the T) get as
+  // many layers as their degree, as network faces do (gb_face.cpp).
+  std::vector<char> pole(n, 0);
+  for (int i : GBRibbonPatch::sides_without_positive_pair(dom)) pole[i] = 1;
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> z(-0.2, 0.2);
   std::vector<std::vector<std::vector<Vec3>>> ribbons(n);
   for (int i = 0; i < n; ++i) {
-    const int d = i == 0 ? d0 : 3, l = i == 1 ? l1 : 2;
+    const int d = i == 0 ? d0 : 3, l = std::max(i == 1 ? l1 : 2, pole[i] ? d : 0);
     const Vec2 e = dom.vertex(i) - dom.vertex(i - 1);
     const Vec2 inward = Vec2(-e.y, e.x) / glm::length(e);
     for (int k = 0; k < l; ++k) {
@@ -207,10 +211,6 @@ SurfaceJet quad_sum(const GBRibbonPatch& g, Vec2 x) {
   return r;
 }
 
-double cross(Vec2 a, Vec2 b) {
-  return a.x * b.y - a.y * b.x;
-}
-
 struct Case {
   const char* name;
   std::vector<Vec2> poly;
@@ -266,7 +266,7 @@ TEST(GBRibbonEvaluate, MatchesBasisSumInsideOnSidesAndAtCorners) {
       interior.value, side.value, corner.value);
   EXPECT_LE(interior.value, 1e-13);
   EXPECT_LE(side.value, 1e-13);
-  EXPECT_EQ(corner.value, 0);  // the same corner_basis() path
+  EXPECT_EQ(corner.value, 0);  // the same gb_ribbon_corner_basis() path
   EXPECT_EQ(interior.reference_not_finite + side.reference_not_finite + corner.reference_not_finite,
             0);
 }

@@ -1,4 +1,4 @@
-// Helpers of the GB patch tests: the shared reference models and random GB nets.
+// Helpers of the GB patch tests: the reference models of tests/data/gb and random GB nets.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -11,12 +11,12 @@
 #include <vector>
 
 #include "core/io/gbp_io.hpp"
-#include "core/patch/gb_patch.hpp"
+#include "core/patch/gb/gb_patch.hpp"
 
 namespace pl::test {
 
 inline std::filesystem::path gb_reference_dir() {
-  return std::filesystem::path(PATCHLAB_SHARED_DIR) / "reference" / "gb";
+  return std::filesystem::path(PATCHLAB_TEST_DATA_DIR) / "gb";
 }
 
 inline const std::vector<std::string>& gb_reference_models() {
@@ -70,8 +70,9 @@ inline GBPatch random_gb(int n, int d, unsigned seed) {
   return GBPatch(n, d, std::move(p));
 }
 
-#define PATCHLAB_REQUIRE_GB_REFERENCE()                               \
-  if (!std::filesystem::is_directory(::pl::test::gb_reference_dir())) \
-  GTEST_SKIP() << "GB reference folder " << ::pl::test::gb_reference_dir() << " is missing"
+// The reference data is part of the repository: a test that needs it fails without it.
+#define PATCHLAB_REQUIRE_GB_REFERENCE()                                      \
+  ASSERT_TRUE(std::filesystem::is_directory(::pl::test::gb_reference_dir())) \
+      << "GB reference folder " << ::pl::test::gb_reference_dir() << " is missing"
 
 }  // namespace pl::test

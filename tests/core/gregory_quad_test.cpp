@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/io/scene_io.hpp"
 #include "core/patch/bezier_patch.hpp"
 #include "gregory_test_util.hpp"

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/network/face_ribbons.hpp"
 #include "gregory_test_util.hpp"
 #include "network_test_util.hpp"

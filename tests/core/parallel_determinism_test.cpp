@@ -1,4 +1,4 @@
-// The core's parallel loops (core/parallel/parallel_for.hpp): every index once, in tasks of the
+// The core's parallel loops (core/base/parallel_for.hpp): every index once, in tasks of the
 // grain, really on several threads, exceptions carried to the caller; and the evaluator's results
 // the same bit for bit on one thread and on many, whatever the grains.
 #include <gtest/gtest.h>
@@ -16,10 +16,10 @@
 #include "core/domain/convex_polygon.hpp"
 #include "core/domain/unit_square.hpp"
 #include "core/eval/patch_evaluator.hpp"
-#include "core/parallel/parallel_for.hpp"
+#include "core/base/parallel_for.hpp"
 #include "core/patch/bezier_patch.hpp"
 #include "core/patch/bspline_patch.hpp"
-#include "core/patch/gb_patch.hpp"
+#include "core/patch/gb/gb_patch.hpp"
 #include "test_util.hpp"
 
 namespace pl {

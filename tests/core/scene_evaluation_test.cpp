@@ -8,7 +8,7 @@
 #include <random>
 #include <set>
 
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/patch/bezier_patch.hpp"
 #include "network_test_util.hpp"
 #include "scene_evaluation_test_util.hpp"

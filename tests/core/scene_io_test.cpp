@@ -6,7 +6,7 @@
 #include <fstream>
 
 #include "core/io/atomic_file.hpp"
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/patch/bezier_patch.hpp"
 #include "test_util.hpp"
 

@@ -1,5 +1,5 @@
 // libFuzzer target: the .gbp reader, and the writer on what it accepts (bit-exact round trip).
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/io/gbp_io.hpp"
 #include "fuzz_common.hpp"
 

@@ -10,8 +10,8 @@
 #include "core/io/scene_io.hpp"
 #include "core/network/sample_networks.hpp"
 #include "core/patch/catmull_clark_patch.hpp"
-#include "core/patch/gb_default_net.hpp"
-#include "core/patch/gb_patch.hpp"
+#include "core/patch/gb/default_net.hpp"
+#include "core/patch/gb/gb_patch.hpp"
 
 namespace {
 

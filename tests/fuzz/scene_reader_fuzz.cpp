@@ -1,6 +1,6 @@
 // libFuzzer target: the scene reader (JSON syntax, the reading rules and every patch codec
 // through it) and the writer on what it accepts (a read scene must write and read back).
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 #include "core/io/scene_io.hpp"
 #include "fuzz_common.hpp"
 

@@ -1,7 +1,7 @@
 #include "app/editor/logic/document_session.hpp"
 
 #include "app/cli/load_input.hpp"
-#include "core/io/data_error.hpp"
+#include "core/base/data_error.hpp"
 
 namespace pl {
 

@@ -1,0 +1,377 @@
+#include "core/patch/gb/gb_ribbon_patch.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "core/patch/gb/blend.hpp"
+#include "core/patch/gb/vertex_limits.hpp"
+
+namespace pl {
+
+namespace {
+
+// Checked before any member is built from it.
+const ConcavePolygonDomain& checked(const ConcavePolygonDomain& domain) {
+  if (domain.side_count() > GBRibbonPatch::kMaxSides)
+    throw std::invalid_argument("a gb-ribbons patch has at most " +
+                                std::to_string(GBRibbonPatch::kMaxSides) + " sides, got " +
+                                std::to_string(domain.side_count()));
+  return domain;
+}
+
+}  // namespace
+
+GBRibbonPatch::GBRibbonPatch(ConcavePolygonDomain domain,
+                             const std::vector<std::vector<std::vector<Vec3>>>& ribbons)
+    : domain_(checked(domain)), params_(domain_.vertices()) {
+  const int n = domain_.side_count();
+  if (static_cast<int>(ribbons.size()) != n)
+    throw std::invalid_argument("gb-ribbons patch has " + std::to_string(ribbons.size()) +
+                                " ribbons for a " + std::to_string(n) + "-sided domain");
+  for (int i = 0; i < n; ++i) {
+    const auto& r = ribbons[i];
+    const std::string which = "ribbon " + std::to_string(i);
+    if (r.size() < 2)
+      throw std::invalid_argument(which + " needs at least 2 layers (G1 needs the second row)");
+    if (r[0].size() < 2) throw std::invalid_argument(which + " needs degree >= 1");
+    if (r[0].size() > kMaxDegree + 1 || r.size() > kMaxLayers)
+      throw std::invalid_argument(which + " exceeds degree " + std::to_string(kMaxDegree) + " or " +
+                                  std::to_string(kMaxLayers) + " layers");
+    for (const auto& row : r)
+      if (row.size() != r[0].size())
+        throw std::invalid_argument(which + " has rows of different lengths");
+    degree_.push_back(static_cast<int>(r[0].size()) - 1);
+    layers_.push_back(static_cast<int>(r.size()));
+    for (const auto& row : r)
+      for (const Vec3& p : row)
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+          throw std::invalid_argument(which + " has a non-finite control point");
+  }
+  for (int i = 0; i < n; ++i) {
+    const Vec3 a = ribbons[i][0].back(), b = ribbons[(i + 1) % n][0].front();
+    const double scale = 1 + std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(a.z)});
+    if (glm::length(a - b) > 1e-12 * scale)
+      throw std::invalid_argument("ribbon " + std::to_string(i) + " does not end where ribbon " +
+                                  std::to_string((i + 1) % n) + " starts");
+    const Vec2 ea = domain_.vertex(i) - domain_.vertex(i - 1);
+    const Vec2 eb = domain_.vertex(i + 1) - domain_.vertex(i);
+    if (!(std::fabs(cross(ea, eb)) > 1e-9 * glm::length(ea) * glm::length(eb)))
+      throw std::invalid_argument("domain corner " + std::to_string(i) + " is straight");
+  }
+  std::size_t count = 0;
+  for (int i = 0; i < n; ++i) {
+    offset_.push_back(count);
+    count += degree_[i] + (layers_[i] - 1) * (degree_[i] + 1);
+  }
+  offset_.push_back(count);
+  points_.assign(count, Vec3(0));
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < layers_[i]; ++k)
+      for (int j = 0; j <= degree_[i]; ++j)
+        if (k > 0 || j < degree_[i]) points_[index(i, j, k)] = ribbons[i][k][j];
+  check_parameterisation();
+}
+
+std::size_t GBRibbonPatch::index(int side, int j, int k) const {
+  const int n = sides();
+  side = ((side % n) + n) % n;
+  const int d = degree_[side];
+  if (k == 0) return j == d ? offset_[(side + 1) % n] : offset_[side] + j;
+  return offset_[side] + d + (k - 1) * (d + 1) + j;
+}
+
+ControlPointKind GBRibbonPatch::kind(std::size_t k) const {
+  const auto it = std::upper_bound(offset_.begin(), offset_.end(), k);
+  const int side = static_cast<int>(it - offset_.begin()) - 1;
+  return k - offset_[side] < std::size_t(degree_[side]) ? ControlPointKind::Boundary
+                                                        : ControlPointKind::Inner;
+}
+
+std::vector<std::vector<std::vector<Vec3>>> GBRibbonPatch::ribbons() const {
+  std::vector<std::vector<std::vector<Vec3>>> r(sides());
+  for (int i = 0; i < sides(); ++i) {
+    r[i].assign(layers_[i], std::vector<Vec3>(degree_[i] + 1));
+    for (int k = 0; k < layers_[i]; ++k)
+      for (int j = 0; j <= degree_[i]; ++j) r[i][k][j] = point(i, j, k);
+  }
+  return r;
+}
+
+std::vector<BezierCurve> GBRibbonPatch::boundary_curves() const {
+  std::vector<BezierCurve> c;
+  for (const auto& r : ribbons()) c.emplace_back(r[0]);
+  return c;
+}
+
+namespace {
+
+// The local parameters of every side at x: lambda, h, and the corner weights alpha of the
+// squared variant (blend.hpp: w = h^2).
+struct RibbonLocal {
+  Scratch<Jet, GBRibbonPatch::kMaxSides> lam, h, alpha;
+  RibbonLocal(const MeanValueParameters& params, Vec2 x) {
+    const int n = params.sides();
+    params.evaluate(x, std::span(lam.data(), n), {}, std::span(h.data(), n));
+    Scratch<Jet, GBRibbonPatch::kMaxSides> h2;
+    for (int i = 0; i < n; ++i) h2[i] = h[i] * h[i];
+    corner_alphas(n, h2.data(), alpha.data());
+  }
+};
+
+}  // namespace
+
+void GBRibbonPatch::basis(Vec2 x, std::span<Jet> out) const {
+  const int n = sides();
+  const auto& v = domain_.vertices();
+  for (int i = 0; i < n; ++i)
+    if (x == v[i]) {
+      std::fill(out.begin(), out.end(), Jet(0.0));
+      return gb_ribbon_corner_basis(*this, i, out);
+    }
+  const Jet inv = reciprocal(blends(x, out));
+  for (Jet& b : out) b = b * inv;
+}
+
+Jet GBRibbonPatch::blends(Vec2 x, std::span<Jet> out) const {
+  const int n = sides();
+  std::fill(out.begin(), out.end(), Jet(0.0));
+  const RibbonLocal L(params_, x);
+  Jet sum(0.0);
+  RibbonPowers t;
+  for (int i = 0; i < n; ++i) {
+    const int d = degree_[i], m = 2 * layers_[i] - 1;
+    const Jet& prev = L.lam[i == 0 ? n - 1 : i - 1];
+    t.build(L.lam[i], prev, prev + L.lam[i], L.h[i], d, layers_[i]);
+    for (int k = 0; k < layers_[i]; ++k) {
+      const Jet hk = binomial(m, k) * t.hp(k);
+      for (int j = 0; j <= d; ++j) {
+        const Jet b = weighted(binomial(d, j) * homogeneous(t, j, d - j, m - k - d) * hk,
+                               ribbon_mu(d, j), L.alpha.data(), i, n);
+        out[index(i, j, k)] += b;
+        sum += b;
+      }
+    }
+  }
+  return sum;
+}
+
+SurfaceJet GBRibbonPatch::evaluate(Vec2 x) const {
+  const int n = sides();
+  const auto& v = domain_.vertices();
+  // At a vertex the weights are 0/0 and basis() has the exact corner limits.
+  for (int i = 0; i < n; ++i)
+    if (x == v[i]) return Patch::evaluate(x);
+  // S = N / W with N = sum b_jk C_jk, W = sum b_jk, summed directly instead of normalising every
+  // basis function (no per-sample heap allocation, no pow() per term). Off the limit case,
+  //   b_jk = [binom(d, j) lambda_i^j lambda_i-1^(d-j) D_i^(l-d) mu_j] [binom(m, k) h_i^k
+  //          D_i^(l-1-k)] = a_j H_k,
+  // so N_i = sum_k H_k (sum_j a_j C_jk) and W_i = (sum_j a_j)(sum_k H_k): a few jet products
+  // per row and per j instead of several per term. The lowest power of D (negative for d > l) goes
+  // with the lambdas, as in basis(), so the huge 1 / D^(d-l) near other ribbons' sides meets the
+  // tiny lambda powers first instead of overflowing with h's. Equal to the basis() sum up to
+  // rounding.
+  const RibbonLocal L(params_, x);
+  // Summed relative to the corner point of the largest lambda: near a corner the two ribbons
+  // meeting there give that point weights whose second derivatives are huge (those of mu grow
+  // like 1 / distance^2) and cancel only in their sum. Multiplied by the point before summing,
+  // the cancellation would cost ~|C| 1e-16 / distance^2 (worse than basis(), which adds the two
+  // weights first); relative to the point itself those terms are exactly zero.
+  int near = 0;
+  for (int i = 1; i < n; ++i)
+    if (L.lam[i].f > L.lam[near].f) near = i;
+  const Vec3 origin = points_[offset_[(near + 1) % n]];
+  Jet w(0.0), sx(0.0), sy(0.0), sz(0.0);
+  RibbonPowers t;
+  Scratch<Jet, kMaxDegree + 1> A;
+  for (int i = 0; i < n; ++i) {
+    const int d = degree_[i], l = layers_[i], m = 2 * l - 1;
+    const Jet& prev = L.lam[i == 0 ? n - 1 : i - 1];
+    t.build(L.lam[i], prev, prev + L.lam[i], L.h[i], d, l);
+    // Storage of C^i_{j,k}: see index(); row 0 ends at the next ribbon's first point.
+    const std::size_t row0 = offset_[i], end0 = offset_[(i + 1) % n], inner = offset_[i] + d;
+    const auto point_at = [&](int j, int k) -> Vec3 {
+      if (k > 0) return points_[inner + (k - 1) * (d + 1) + j] - origin;
+      return points_[j < d ? row0 + j : end0] - origin;
+    };
+    if (t.on_side && d > l) {
+      // x on a side where D_i vanishes and some exponent of D_i is negative: the terms are the
+      // one-sided limits of homogeneous(), which do not factor; this is rare (boundary
+      // samples), so sum term by term as basis() does.
+      for (int k = 0; k < l; ++k) {
+        const Jet hk = binomial(m, k) * t.hp(k);
+        for (int j = 0; j <= d; ++j) {
+          const Jet b = weighted(binomial(d, j) * homogeneous(t, j, d - j, m - k - d) * hk,
+                                 ribbon_mu(d, j), L.alpha.data(), i, n);
+          const Vec3 c = point_at(j, k);
+          sx += b * c.x, sy += b * c.y, sz += b * c.z;
+          w += b;
+        }
+      }
+      continue;
+    }
+    Jet asum(0.0), hsum(0.0);
+    for (int j = 0; j <= d; ++j) {
+      // homogeneous(t, j, d - j, l - d) off the limit case.
+      A[j] =
+          weighted(binomial(d, j) * (t.la(j) * t.lb(d - j) * (l >= d ? t.dp(l - d) : t.rp(d - l))),
+                   ribbon_mu(d, j), L.alpha.data(), i, n);
+      asum += A[j];
+    }
+    // Rows first: l jet products per coordinate instead of d + 1 (l <= d + 1 in practice).
+    for (int k = 0; k < l; ++k) {
+      const Jet Hk = binomial(m, k) * t.hp(k) * t.dp(l - 1 - k);
+      hsum += Hk;
+      Jet vx(0.0), vy(0.0), vz(0.0);
+      for (int j = 0; j <= d; ++j) {
+        const Vec3 c = point_at(j, k);
+        vx += A[j] * c.x, vy += A[j] * c.y, vz += A[j] * c.z;
+      }
+      sx += Hk * vx, sy += Hk * vy, sz += Hk * vz;
+    }
+    w += asum * hsum;
+  }
+  const Jet inv = reciprocal(w);
+  const Jet px = sx * inv, py = sy * inv, pz = sz * inv;
+  SurfaceJet s;
+  s.p = origin + Vec3(px.f, py.f, pz.f);
+  s.su = {px.fu, py.fu, pz.fu};
+  s.sv = {px.fv, py.fv, pz.fv};
+  s.suu = {px.fuu, py.fuu, pz.fuu};
+  s.suv = {px.fuv, py.fuv, pz.fuv};
+  s.svv = {px.fvv, py.fvv, pz.fvv};
+  return s;
+}
+
+namespace {
+
+// The points the parameterization checks look at: a tessellation's interior points.
+std::vector<Vec2> interior_samples(const ConcavePolygonDomain& domain) {
+  constexpr int kCheckDensity = 16;
+  const Tessellation t = domain.tessellate(kCheckDensity);
+  std::vector<bool> boundary(t.points.size(), false);
+  for (const auto& side : t.sides)
+    for (uint32_t k : side) boundary[k] = true;
+  std::vector<Vec2> xs;
+  for (std::size_t k = 0; k < t.points.size(); ++k)
+    if (!boundary[k]) xs.push_back(t.points[k]);
+  return xs;
+}
+
+// Samples per side of the checks on the sides.
+constexpr int kSideSamples = 16;
+
+// The least share of its coordinates' slope at which D_i may grow from a side where they all
+// vanish: |s_i| up to ~1 / kMinShare next to the side.
+constexpr double kMinShare = 1e-3;
+
+bool is_convex(const ConcavePolygonDomain& d) {
+  for (int i = 0; i < d.side_count(); ++i)
+    if (!(cross(d.vertex(i) - d.vertex(i - 1), d.vertex(i + 1) - d.vertex(i)) > 0)) return false;
+  return true;
+}
+
+std::string at(Vec2 x) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "(%.3g, %.3g)", x.x, x.y);
+  return buf;
+}
+
+}  // namespace
+
+std::vector<int> GBRibbonPatch::sides_without_positive_pair(const ConcavePolygonDomain& domain,
+                                                            std::vector<Vec2>* where) {
+  // Inside a convex polygon the coordinates are all positive (Floater 2003): only a domain with
+  // a reflex corner needs the sampled check (it costs a few ms, paid on every re-fill of a drag).
+  std::vector<int> out;
+  if (is_convex(domain)) return out;
+  const int n = domain.side_count();
+  std::vector<Jet> lam(n);
+  std::vector<char> bad(n, 0);
+  const auto flag = [&](int i, Vec2 x) {
+    if (bad[i]) return;
+    bad[i] = 1;
+    out.push_back(i);
+    if (where) where->push_back(x);
+  };
+  for (const Vec2& x : interior_samples(domain)) {
+    mean_value_coordinates(domain.vertices(), x, lam);
+    for (int i = 0; i < n; ++i)
+      if (!(lam[(i + n - 1) % n].f + lam[i].f > 0)) flag(i, x);
+  }
+  // D_i vanishes on every side s away from vertices i-1 and i, and so do lambda_{i-1} and
+  // lambda_i; s_i = lambda_i / D_i stays bounded next to side s only if D_i grows into the
+  // domain at least a fraction of as fast as they do. Where it does not, D_i is negative (or
+  // vanishes to second order) in a layer along side s too thin for the interior samples, and
+  // a ribbon with d_i > l_i has a pole there: checked on the sides.
+  for (int s = 0; s < n; ++s) {
+    const Vec2 a = domain.vertex(s - 1), b = domain.vertex(s);
+    const Vec2 inward = Vec2(a.y - b.y, b.x - a.x) / glm::length(b - a);  // CCW polygon
+    for (int k = 0; k < kSideSamples; ++k) {
+      const Vec2 x = a + ((k + 0.5) / kSideSamples) * (b - a);
+      mean_value_coordinates(domain.vertices(), x, lam);
+      for (int i = 0; i < n; ++i) {
+        const int p = (i + n - 1) % n, s0 = (s + n - 1) % n;
+        if (p == s0 || p == s || i == s0 || i == s) continue;  // D_i > 0 on side s
+        const auto slope = [&](const Jet& f) { return f.fu * inward.x + f.fv * inward.y; };
+        const double pair = std::max(std::fabs(slope(lam[p])), std::fabs(slope(lam[i])));
+        if (pair > 0 && !(slope(lam[p] + lam[i]) > kMinShare * pair)) flag(i, x);
+      }
+    }
+  }
+  return out;
+}
+
+void GBRibbonPatch::check_parameterisation() const {
+  // Mean value coordinates can be negative behind reflex vertices. Where D_i = lambda_{i-1} +
+  // lambda_i vanishes inside the domain, a ribbon with d_i > l_i has a pole (its blend carries
+  // 1 / D_i^(d_i - l_i)); a ribbon with d_i <= l_i is polynomial in the coordinates and has
+  // none. Every blend is finite then, and the patch needs only a positive sum of blends.
+  if (is_convex(domain_)) return;  // positive coordinates, positive blends
+  // h_s must grow into the domain from side s: its slope is the sum of the other coordinates'
+  // slopes, and behind reflex corners some of those are negative. Where they cancel, ribbon s
+  // has no cross-boundary direction (the surface folds along the side): no layer helps.
+  const int n = sides();
+  std::vector<Jet> lam(n);
+  for (int s = 0; s < n; ++s) {
+    const Vec2 a = domain_.vertex(s - 1), b = domain_.vertex(s);
+    const Vec2 inward = Vec2(a.y - b.y, b.x - a.x) / glm::length(b - a);
+    for (int k = 0; k < kSideSamples; ++k) {
+      const Vec2 x = a + ((k + 0.5) / kSideSamples) * (b - a);
+      mean_value_coordinates(domain_.vertices(), x, lam);
+      double slope = 0, total = 0;
+      for (int j = 0; j < n; ++j) {
+        const double sj = lam[j].fu * inward.x + lam[j].fv * inward.y;
+        total += std::fabs(sj);
+        if (j != (s + n - 1) % n && j != s) slope += sj;
+      }
+      if (!(slope > kMinShare * total))
+        throw std::invalid_argument(
+            "domain too concave for mean value coordinates: on side " + std::to_string(s) + " at " +
+            at(x) +
+            " the distance parameter h does not grow into the domain (the coordinates of "
+            "vertices hidden behind reflex corners cancel it)");
+    }
+  }
+  std::vector<Vec2> where;
+  const std::vector<int> bad = sides_without_positive_pair(domain_, &where);
+  for (std::size_t b = 0; b < bad.size(); ++b) {
+    const int i = bad[b];
+    if (degree_[i] > layers_[i])
+      throw std::invalid_argument(
+          "domain too concave for mean value coordinates: lambda_i-1 + lambda_i <= 0 at " +
+          at(where[b]) + " for side " + std::to_string(i) + ", a pole of its ribbon (degree " +
+          std::to_string(degree_[i]) + ", " + std::to_string(layers_[i]) +
+          " layers; a ribbon with as many layers as its degree has none)");
+  }
+  std::vector<Jet> phi(size());
+  for (const Vec2& x : interior_samples(domain_)) {
+    const Jet w = blends(x, phi);
+    if (!(w.f > 0) || !std::isfinite(w.fuu) || !std::isfinite(w.fuv) || !std::isfinite(w.fvv))
+      throw std::invalid_argument("gb-ribbons blend sum is not positive at " + at(x) +
+                                  " inside the domain");
+  }
+}
+
+}  // namespace pl
