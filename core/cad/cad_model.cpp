@@ -6,8 +6,8 @@
 #include <stdexcept>
 
 #include "core/analysis/scene_analysis.hpp"  // angle_deg
-#include "core/cad/side_matching.hpp"
 #include "core/base/parallel_for.hpp"
+#include "core/cad/side_matching.hpp"
 
 namespace pl {
 

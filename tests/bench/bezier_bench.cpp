@@ -5,9 +5,9 @@
 
 #include "bench_common.hpp"
 #include "bench_patches.hpp"
+#include "core/base/parallel_for.hpp"
 #include "core/domain/unit_square.hpp"
 #include "core/eval/patch_evaluator.hpp"
-#include "core/base/parallel_for.hpp"
 #include "core/patch/bezier_patch.hpp"
 
 namespace pl::bench {

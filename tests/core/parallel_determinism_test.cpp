@@ -13,10 +13,10 @@
 #include <stdexcept>
 #include <thread>
 
+#include "core/base/parallel_for.hpp"
 #include "core/domain/convex_polygon.hpp"
 #include "core/domain/unit_square.hpp"
 #include "core/eval/patch_evaluator.hpp"
-#include "core/base/parallel_for.hpp"
 #include "core/patch/bezier_patch.hpp"
 #include "core/patch/bspline_patch.hpp"
 #include "core/patch/gb/gb_patch.hpp"
