@@ -5,13 +5,16 @@
 # editor_frame_ms_p50 / _p95 are printed as
 #   figure editor_frame_ms_p95_SCENE MS ms, editor_frame_ms_p95_SCENE_busy MS ms,
 #   editor_frame_p95_busy_over_quiet_SCENE RATIO x   (and the same for p50)
-# Usage: bash tests/bench/editor_drag_busy.sh [BUILD_DIR] [ROUNDS]   (needs xvfb-run)
+# Usage: bash tests/bench/editor_drag_busy.sh [BUILD_DIR] [ROUNDS] [SCENES]
+#   SCENES: "default faces_384" unless given (the smoke test runs "default" only).
+# Needs xvfb-run (exit 77 without it, which ctest counts as skipped).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 build=${1:-$root/build}
 rounds=${2:-2}
+scenes=${3:-default faces_384}
 patchlab=$build/app/patchlab
-command -v xvfb-run >/dev/null || { echo "editor_drag_busy: xvfb-run is missing" >&2; exit 1; }
+command -v xvfb-run >/dev/null || { echo "editor_drag_busy: xvfb-run is missing" >&2; exit 77; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 "$patchlab" sample cube-sphere --cells 8 -o "$work/cube_sphere_384.json" >/dev/null
@@ -19,8 +22,12 @@ unset DISPLAY
 
 median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 
-for scene in default:"$root/assets/default.json" faces_384:"$work/cube_sphere_384.json"; do
-  name=${scene%%:*} file=${scene#*:}
+for name in $scenes; do
+  case $name in
+    default) file=$root/assets/default.json ;;
+    faces_384) file=$work/cube_sphere_384.json ;;
+    *) echo "editor_drag_busy: unknown scene $name (default, faces_384)" >&2; exit 2 ;;
+  esac
   for r in $(seq "$rounds"); do
     for mode in quiet busy; do
       flag=(); [ "$mode" = busy ] && flag=(--busy)
