@@ -54,6 +54,7 @@ void bench_gb_face(const Options& options);
 void bench_engine(const Options& options);
 void bench_catmull_clark(const Options& options);
 void bench_cad(const Options& options);
+void bench_curve(const Options& options);
 void bench_grains(const Options& options);
 
 }  // namespace pl::bench
