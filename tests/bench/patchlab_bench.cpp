@@ -1,7 +1,7 @@
 // The benchmark program: prints "figure NAME VALUE UNIT" lines. Run without arguments for real
 // figures (Release build), with --quick for a seconds-long smoke run, with --grains for the sweep
-// that chose the parallel grains, with --only NAME,... for some of the benchmarks (bezier, gb, gb_face,
-// engine, catmull_clark, cad, curve).
+// that chose the parallel grains, with --only NAME,... for some of the benchmarks (bezier, gb,
+// gb_face, engine, catmull_clark, cad, curve).
 #include <oneapi/tbb/info.h>
 
 #include <cstring>
