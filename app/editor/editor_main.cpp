@@ -1,11 +1,11 @@
 #include "app/editor/editor_main.hpp"
 
-#include <unistd.h>
-
 #include <charconv>
-#include <cstdlib>
+#include <cstdio>
+#include <optional>
 
 #include "app/editor/editor.hpp"
+#include "app/editor/logic/busy_core.hpp"
 #include "app/editor/logic/editor_paths.hpp"
 #include "app/editor/logic/grid_scene.hpp"
 #include "app/editor/logic/selection.hpp"
@@ -30,35 +30,16 @@ bool parse_size(const std::string& v, int& w, int& h) {
 
 }  // namespace
 
-namespace {
-
-// The core's OpenMP loops are short; with libgomp's default spin-waiting their idle threads burn
-// the cores that llvmpipe needs to draw (measured: 2 fps instead of 19 on 2 busy cores).
-// libgomp reads OMP_WAIT_POLICY once, when it is loaded, so the editor re-executes itself with
-// the variable set. Returns only when that is not possible (then it runs as it is).
-void ensure_passive_openmp(std::span<const std::string> args) {
-  if (std::getenv("OMP_WAIT_POLICY")) return;
-  if (setenv("OMP_WAIT_POLICY", "PASSIVE", 1) != 0) return;
-  const fs::path self = executable_path();
-  if (self.empty()) return;
-  std::vector<std::string> keep{self.string()};
-  keep.insert(keep.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (std::string& a : keep) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  execv(self.c_str(), argv.data());
-}
-
-}  // namespace
-
 int run_editor(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
-  ensure_passive_openmp(args);
   EditorOptions o;
+  bool busy = false;  // --busy: the drag benchmark with one core held busy by another process
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&]() -> const std::string* { return i + 1 < args.size() ? &args[++i] : nullptr; };
     if (a == "--bench-drag") {
       o.bench_drag = true;
+    } else if (a == "--busy") {
+      busy = true;
     } else if (a == "--bench-pick") {
       o.bench_pick = true;
     } else if (a == "--debug-point") {
@@ -90,7 +71,7 @@ int run_editor(std::span<const std::string> args, std::ostream& out, std::ostrea
     } else if (a.rfind("--", 0) == 0) {
       err << "patchlab: unknown editor option " << a << "\n"
           << "usage: patchlab [FILE] [--size WxH] [--compare] [--screenshot OUT.png] "
-             "[--bench-drag] [--bench-pick] [--debug-point NAME]... [--debug-state]\n";
+             "[--bench-drag [--busy]] [--bench-pick] [--debug-point NAME]... [--debug-state]\n";
       return 2;
     } else if (!o.file) {
       o.file = a;
@@ -99,7 +80,11 @@ int run_editor(std::span<const std::string> args, std::ostream& out, std::ostrea
       return 2;
     }
   }
-  if (o.bench_drag && !args.empty() && args.size() <= 2) o.width = 1280, o.height = 720;
+  if (busy && !o.bench_drag) {
+    err << "patchlab: --busy goes with --bench-drag\n";
+    return 2;
+  }
+  if (o.bench_drag && !args.empty() && args.size() - busy <= 2) o.width = 1280, o.height = 720;
 
   if (o.bench_pick) return run_pick_benchmark(o.file, out, err);
 
@@ -134,6 +119,11 @@ int run_editor(std::span<const std::string> args, std::ostream& out, std::ostrea
   try {
     GlWindow window(o.width, o.height, "PatchLab", ini.value_or(fs::path()));
     Editor editor(window, o, std::move(session));
+    std::optional<BusyCore> spinner;
+    if (busy) {
+      spinner.emplace();
+      std::printf("# one core held busy by a spinning process (pid %d)\n", int(spinner->pid()));
+    }
     return o.bench_drag ? editor.run_drag_benchmark() : editor.run();
   } catch (const WindowError& e) {
     err << "patchlab: " << e.what() << "\n";

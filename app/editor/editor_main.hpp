@@ -1,4 +1,5 @@
-// `patchlab [FILE] [--bench-drag] [--debug-point NAME] [--size WxH]`: the editor's entry point.
+// `patchlab [FILE] [--bench-drag [--busy]] [--debug-point NAME] [--size WxH]`: the editor's entry
+// point.
 #pragma once
 
 #include <ostream>

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <limits>
 #include <stdexcept>
 
 #include "core/analysis/scene_analysis.hpp"  // angle_deg
+#include "core/base/parallel_for.hpp"
 #include "core/cad/side_matching.hpp"
 
 namespace pl {
@@ -39,20 +39,13 @@ CurveFunction side_function(const SurfaceFunction& f, int s) {
   };
 }
 
-// Runs body(i) for i in [0, n) on OpenMP threads; rethrows the first exception.
+// Runs body(i) for i in [0, n), one face per task (each takes milliseconds), on the core's
+// work-stealing scheduler; rethrows the first exception.
 template <class Body>
 void parallel_for(int n, Body&& body) {
-  std::exception_ptr error;
-#pragma omp parallel for schedule(dynamic, 1)
-  for (int i = 0; i < n; ++i) {
-    try {
-      body(i);
-    } catch (...) {
-#pragma omp critical
-      if (!error) error = std::current_exception();
-    }
-  }
-  if (error) std::rethrow_exception(error);
+  parallel_chunks(std::size_t(std::max(n, 0)), 1, [&](std::size_t b, std::size_t e) {
+    for (std::size_t i = b; i < e; ++i) body(int(i));
+  });
 }
 
 double exact_normal_deviation(const CadSurface& s, const SurfaceFunction& f, int k,

@@ -1,9 +1,13 @@
 #include "core/eval/patch_evaluator.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cassert>
 #include <cmath>
+#include <mutex>
 #include <optional>
+
+#include "core/base/parallel_for.hpp"
 
 namespace pl {
 
@@ -12,13 +16,13 @@ namespace {
 // points this far and twice as far from it (Richardson: error O(h^2), rounding O(1e-16 / h)).
 constexpr double kSingularStep = 1e-5;
 
-// Below this many samples a loop runs on one thread: waking the OpenMP team costs more than it
-// saves (and spinning idle threads steal the core from the renderer and other processes).
-constexpr std::ptrdiff_t kParallelMin = 8192;
-
 // Samples per evaluate_many call of evaluate_all: enough to amortise the call, few enough that the
 // jets are still in cache when their geometry is computed.
-constexpr std::ptrdiff_t kChunk = 512;
+constexpr std::size_t kChunk = 512;
+
+// Samples per axpy-then-geometry step of a drag update: their jets are still in L1 when the
+// geometry reads them back.
+constexpr std::size_t kUpdateStep = 64;
 
 inline void axpy(SurfaceJet& s, const Vec3& d, const Jet& w) {
   s.p += w.f * d;
@@ -69,8 +73,9 @@ void PatchEvaluator::store_compact(std::span<const SurfaceJet> jets, std::size_t
     const std::size_t i = first + j;
     positions_[i] = jets[j].p;
     if (geometry_[i].status == GeometryStatus::Singular) geometry_[i] = singular_limit(i);
-    if (!pl::finite(jets[j])) {
-#pragma omp critical(patch_evaluator_nonfinite)
+    if (!pl::finite(jets[j])) {  // rare: a lock is cheaper than per-task lists
+      static std::mutex nonfinite_mutex;
+      const std::lock_guard lock(nonfinite_mutex);
       nonfinite_.push_back(static_cast<uint32_t>(i));
     }
   }
@@ -128,22 +133,22 @@ SurfaceGeometry PatchEvaluator::singular_limit(std::size_t i) const {
 
 void PatchEvaluator::evaluate_all() {
   const auto& xs = tessellation_->points;
-  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(xs.size());
   nonfinite_.clear();
   // Chunks through evaluate_many, so patch types with a batched (SIMD) form use it.
-#pragma omp parallel for schedule(static) if (n >= kParallelMin)
-  for (std::ptrdiff_t b = 0; b < n; b += kChunk) {
-    const std::ptrdiff_t e = std::min(n, b + kChunk);
-    if (storage_ == SampleStorage::Jets) {
-      patch_->evaluate_many(std::span(xs).subspan(b, e - b), std::span(jets_).subspan(b, e - b));
-      update_geometry({}, b, e - b);
-    } else {  // the chunk's jets live only until its geometry is computed
-      SurfaceJet chunk[kChunk];
-      const std::span<SurfaceJet> jets(chunk, static_cast<std::size_t>(e - b));
-      patch_->evaluate_many(std::span(xs).subspan(b, e - b), jets);
-      store_compact(jets, b);
+  parallel_chunks(xs.size(), grains_.evaluate, [&](std::size_t first, std::size_t last) {
+    for (std::size_t b = first; b < last; b += kChunk) {
+      const std::size_t e = std::min(last, b + kChunk);
+      if (storage_ == SampleStorage::Jets) {
+        patch_->evaluate_many(std::span(xs).subspan(b, e - b), std::span(jets_).subspan(b, e - b));
+        update_geometry({}, b, e - b);
+      } else {  // the chunk's jets live only until its geometry is computed
+        SurfaceJet chunk[kChunk];
+        const std::span<SurfaceJet> jets(chunk, e - b);
+        patch_->evaluate_many(std::span(xs).subspan(b, e - b), jets);
+        store_compact(jets, b);
+      }
     }
-  }
+  });
   std::sort(nonfinite_.begin(), nonfinite_.end());
   // Columns depend only on the basis, but a full rebuild starts clean.
   for (Column& c : columns_) keep_storage(c);
@@ -176,15 +181,14 @@ const PatchEvaluator::Column& PatchEvaluator::column(std::size_t k) {
   c.count = xs.size();
   c.phi = spare_ ? std::move(spare_) : allocate_jets(c.count);
   // Evaluate in parallel chunks: influence() is const and thread-safe.
-  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(xs.size());
-  constexpr std::ptrdiff_t chunk = 4096;
-  std::size_t nonzero = 0;
-#pragma omp parallel for schedule(dynamic) reduction(+ : nonzero) if (n >= kParallelMin)
-  for (std::ptrdiff_t b = 0; b < n; b += chunk) {
-    const std::ptrdiff_t e = std::min(n, b + chunk);
+  std::atomic<std::size_t> nonzero_count = 0;
+  parallel_chunks(xs.size(), grains_.column, [&](std::size_t b, std::size_t e) {
     patch_->influence(k, std::span(xs).subspan(b, e - b), std::span(&c.phi[b], e - b));
-    for (std::ptrdiff_t i = b; i < e; ++i) nonzero += !c.phi[i].is_zero();
-  }
+    std::size_t here = 0;
+    for (std::size_t i = b; i < e; ++i) here += !c.phi[i].is_zero();
+    nonzero_count += here;
+  });
+  const std::size_t nonzero = nonzero_count;
   if (nonzero * 2 < c.count) {  // sparse: keep only the samples it moves
     c.dense = false;
     JetArray packed = allocate_jets(nonzero);
@@ -215,21 +219,20 @@ std::size_t PatchEvaluator::move_control_point(std::size_t k, const Vec3& p) {
   const Vec3 d = p - patch_->control_point(k);
   patch_->set_control_point(k, p);
   const Column& c = column(k);
-  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(c.count);
+  const std::size_t n = c.count;
   // Dense columns update every sample (a zero weight adds zeros and recomputes the same geometry):
   // cheaper than testing each weight.
   const auto index = c.dense ? std::span<const uint32_t>() : std::span<const uint32_t>(c.index);
-  // Small chunks: their jets are still in L1 when the geometry reads them back.
-  constexpr std::ptrdiff_t chunk = 64;
-#pragma omp parallel for schedule(static) if (n >= kParallelMin)
-  for (std::ptrdiff_t b = 0; b < n; b += chunk) {
-    const std::ptrdiff_t e = std::min(n, b + chunk);
-    if (index.empty())
-      for (std::ptrdiff_t i = b; i < e; ++i) axpy(jets_[i], d, c.phi[i]);
-    else
-      for (std::ptrdiff_t i = b; i < e; ++i) axpy(jets_[index[i]], d, c.phi[i]);
-    update_geometry(index, b, e - b);
-  }
+  parallel_chunks(n, grains_.update, [&](std::size_t first, std::size_t last) {
+    for (std::size_t b = first; b < last; b += kUpdateStep) {
+      const std::size_t e = std::min(last, b + kUpdateStep);
+      if (index.empty())
+        for (std::size_t i = b; i < e; ++i) axpy(jets_[i], d, c.phi[i]);
+      else
+        for (std::size_t i = b; i < e; ++i) axpy(jets_[index[i]], d, c.phi[i]);
+      update_geometry(index, b, e - b);
+    }
+  });
   // A point without influence here (an empty sparse column: e.g. a Catmull–Clark vertex far from
   // this face) changed no sample, so the renderer has nothing to re-upload.
   if (n > 0) ++revision_;
@@ -290,15 +293,15 @@ std::size_t PatchEvaluator::move_control_points(std::span<const PointMove> moves
     return touched;
   }
   for (const PointMove& m : moves) patch_->set_control_point(m.k, m.p);
-  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(jets_.size());
-  constexpr std::ptrdiff_t chunk = 64;  // jets still in L1 when their geometry reads them back
-#pragma omp parallel for schedule(static) if (n >= kParallelMin)
-  for (std::ptrdiff_t b = 0; b < n; b += chunk) {
-    const std::ptrdiff_t e = std::min(n, b + chunk);
-    for (std::size_t m = 0; m < cols.size(); ++m)
-      for (std::ptrdiff_t i = b; i < e; ++i) axpy(jets_[i], deltas[m], cols[m]->phi[i]);
-    update_geometry({}, b, e - b);
-  }
+  // Each sample adds the points' weights in the order of `moves`, whatever thread runs it.
+  parallel_chunks(jets_.size(), grains_.update, [&](std::size_t first, std::size_t last) {
+    for (std::size_t b = first; b < last; b += kUpdateStep) {
+      const std::size_t e = std::min(last, b + kUpdateStep);
+      for (std::size_t m = 0; m < cols.size(); ++m)
+        for (std::size_t i = b; i < e; ++i) axpy(jets_[i], deltas[m], cols[m]->phi[i]);
+      update_geometry({}, b, e - b);
+    }
+  });
   ++revision_;
   return jets_.size();
 }

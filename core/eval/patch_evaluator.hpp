@@ -84,6 +84,22 @@ class PatchEvaluator {
   std::size_t max_columns() const;
   void set_column_budget(std::size_t bytes) { column_budget_ = bytes; }  // tests, tuning
 
+  // Samples per parallel task of each loop (core/base/parallel_for.hpp). Small enough that a
+  // thread the kernel deschedules holds little work while the others finish the rest, large
+  // enough that taking a task costs little next to doing it. Chosen from `patchlab_bench
+  // --grains` (2 cores shared with other work, quiet and with one core busy): drag updates of
+  // 1e5 samples kept their quiet time with one core busy for grains of 128 to 1024 and lost
+  // 2-3x at 64 (task overhead) and on one thread; evaluation showed no difference from 256 to
+  // 8192; column builds were steadiest at 8192. A loop over at most `grain` samples runs on the
+  // calling thread.
+  struct Grains {
+    std::size_t evaluate = 512;  // evaluate_all: one evaluate_many call per task (~0.1-0.2 ms)
+    std::size_t column = 8192;   // an influence column's build
+    std::size_t update = 512;    // a drag update: axpy and geometry (~10-20 us a task)
+  };
+  const Grains& grains() const { return grains_; }
+  void set_grains(const Grains& g) { grains_ = g; }  // tests, tuning
+
  private:
   // Jets allocated but not initialised: the column build writes every one in parallel, and
   // zero-filling a million-sample column first would cost a third of the build.
@@ -126,6 +142,7 @@ class PatchEvaluator {
   uint64_t use_clock_ = 0;
   uint64_t revision_ = 0;
   std::size_t column_budget_ = kColumnBudget;
+  Grains grains_;
   std::vector<std::size_t> last_batch_;  // the points move_control_points moved last time
 };
 

@@ -11,7 +11,8 @@
 namespace pl::bench {
 
 struct Options {
-  bool quick = false;  // tiny sizes: proves the program works (CI smoke test), figures meaningless
+  bool quick = false;   // tiny sizes: proves the program works (CI smoke test), figures meaningless
+  bool grains = false;  // --grains: the parallel grain sweep instead of the figures
 };
 
 inline void figure(const char* name, double value, const char* unit) {
@@ -32,6 +33,20 @@ inline double median_ms(int repeats, const std::function<void()>& f) {
   return t[t.size() / 2];
 }
 
+// Median wall times of `repeats` calls of f with the machine as it is ("quiet") and with one core
+// held busy by a spinning process (BusyCore), measured in `rounds` alternating rounds so both
+// see the same background load.
+struct QuietBusy {
+  double quiet = 0, busy = 0;
+  double ratio() const { return busy / quiet; }  // how much longer a call takes with a core busy
+};
+QuietBusy median_ms_quiet_busy(int repeats, int rounds, const std::function<void()>& f);
+
+// Prints NAME (quiet), NAME_busy and RATIO_NAME, the busy figure over the quiet one (for a time,
+// how many times longer; for a throughput, the fraction kept).
+void figures_quiet_busy(const char* name, const char* unit, double quiet, double busy,
+                        const char* ratio_name);
+
 // One function per benchmark file; patchlab_bench.cpp calls them in order.
 void bench_bezier(const Options& options);
 void bench_gb(const Options& options);
@@ -40,5 +55,6 @@ void bench_engine(const Options& options);
 void bench_catmull_clark(const Options& options);
 void bench_cad(const Options& options);
 void bench_curve(const Options& options);
+void bench_grains(const Options& options);
 
 }  // namespace pl::bench

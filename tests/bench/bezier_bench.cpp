@@ -1,15 +1,16 @@
 // Figures of the foundation issue: full evaluation of a bicubic patch, and the incremental drag
-// update compared with the streaming floor of the same bytes, in the same run.
+// update compared with the streaming floor of the same bytes, in the same run; each also with one
+// core held busy by another process (the *_busy figures and their ratios to the quiet ones).
 #include <random>
 
 #include "bench_common.hpp"
+#include "bench_patches.hpp"
+#include "core/base/parallel_for.hpp"
 #include "core/domain/unit_square.hpp"
 #include "core/eval/patch_evaluator.hpp"
 #include "core/patch/bezier_patch.hpp"
 
 namespace pl::bench {
-
-namespace {
 
 std::shared_ptr<BezierPatch> random_bicubic() {
   std::mt19937_64 rng(7);
@@ -20,30 +21,40 @@ std::shared_ptr<BezierPatch> random_bicubic() {
   return std::make_shared<BezierPatch>(3, 3, std::move(p));
 }
 
+namespace {
+
 // The physical floor of a drag update: stream the same bytes the update reads (influence column
-// and jets) and writes (jets and geometry), with the same threads, doing no arithmetic of note.
-double floor_ms(std::size_t n, int repeats) {
-  std::vector<Jet> column(n, Jet(1e-9));
-  std::vector<SurfaceJet> jets(n);
-  std::vector<SurfaceGeometry> geometry(n);
-  const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(n);
-  return median_ms(repeats, [&] {
-#pragma omp parallel for schedule(static)
-    for (std::ptrdiff_t i = 0; i < m; ++i) {
-      SurfaceJet j = jets[i];
-      j.p.x += column[i].f;
-      j.svv.z += column[i].fvv;
-      jets[i] = j;
-      geometry[i].normal = j.su;
-      geometry[i].gaussian = j.suv.x;
-      geometry[i].mean = j.suv.y;
-      geometry[i].kmin = j.p.x;
-      geometry[i].kmax = j.p.y;
-    }
-  });
+// and jets) and writes (jets and geometry), on the same scheduler with the same grain, doing no
+// arithmetic of note.
+struct Floor {
+  std::vector<Jet> column;
+  std::vector<SurfaceJet> jets;
+  std::vector<SurfaceGeometry> geometry;
+  std::size_t grain;
+  Floor(std::size_t n, std::size_t grain)
+      : column(n, Jet(1e-9)), jets(n), geometry(n), grain(grain) {}
+  void operator()() {
+    parallel_chunks(jets.size(), grain, [&](std::size_t b, std::size_t e) {
+      for (std::size_t i = b; i < e; ++i) {
+        SurfaceJet j = jets[i];
+        j.p.x += column[i].f;
+        j.svv.z += column[i].fvv;
+        jets[i] = j;
+        geometry[i].normal = j.su;
+        geometry[i].gaussian = j.suv.x;
+        geometry[i].mean = j.suv.y;
+        geometry[i].kmin = j.p.x;
+        geometry[i].kmax = j.p.y;
+      }
+    });
+  }
+};
+
+std::string name(const char* prefix, const char* suffix) {
+  return std::string(prefix) + suffix;
 }
 
-void drag_figures(int density, const char* suffix, int repeats) {
+void drag_figures(int density, const char* suffix, int repeats, int rounds) {
   UnitSquareDomain square;
   auto tess = std::make_shared<const Tessellation>(square.tessellate(density));
   PatchEvaluator ev(random_bicubic(), tess);
@@ -51,18 +62,19 @@ void drag_figures(int density, const char* suffix, int repeats) {
   ev.prepare_influence(k);
   Vec3 p = ev.patch().control_point(k);
   int step = 0;
-  const double update = median_ms(repeats, [&] {
+  const QuietBusy update = median_ms_quiet_busy(repeats, rounds, [&] {
     p.z += (++step % 2 ? 1e-3 : -1e-3);
     ev.move_control_point(k, p);
   });
-  const double floor = floor_ms(ev.sample_count(), repeats);
-  char name[64];
-  std::snprintf(name, sizeof name, "drag_update_ms_%s", suffix);
-  figure(name, update, "ms");
-  std::snprintf(name, sizeof name, "drag_floor_ms_%s", suffix);
-  figure(name, floor, "ms");
-  std::snprintf(name, sizeof name, "drag_update_over_floor_%s", suffix);
-  figure(name, update / floor, "x");
+  Floor floor(ev.sample_count(), ev.grains().update);
+  const QuietBusy floor_ms = median_ms_quiet_busy(repeats, rounds, floor);
+  figures_quiet_busy(name("drag_update_ms_", suffix).c_str(), "ms", update.quiet, update.busy,
+                     name("drag_update_busy_over_quiet_", suffix).c_str());
+  figures_quiet_busy(name("drag_floor_ms_", suffix).c_str(), "ms", floor_ms.quiet, floor_ms.busy,
+                     name("drag_floor_busy_over_quiet_", suffix).c_str());
+  figure(name("drag_update_over_floor_", suffix).c_str(), update.quiet / floor_ms.quiet, "x");
+  figure(name("drag_update_over_floor_", suffix).append("_busy").c_str(),
+         update.busy / floor_ms.busy, "x");
 }
 
 }  // namespace
@@ -73,11 +85,14 @@ void bench_bezier(const Options& o) {
     UnitSquareDomain square;
     auto tess = std::make_shared<const Tessellation>(square.tessellate(density));
     PatchEvaluator ev(random_bicubic(), tess);
-    const double ms = median_ms(o.quick ? 2 : 7, [&] { ev.evaluate_all(); });
-    figure("full_eval_msamples_per_s", ev.sample_count() / (ms * 1e3), "Msamples/s");
+    const QuietBusy ms =
+        median_ms_quiet_busy(o.quick ? 2 : 8, o.quick ? 1 : 4, [&] { ev.evaluate_all(); });
+    const double samples = double(ev.sample_count());
+    figures_quiet_busy("full_eval_msamples_per_s", "Msamples/s", samples / (ms.quiet * 1e3),
+                       samples / (ms.busy * 1e3), "full_eval_busy_over_quiet");
   }
-  drag_figures(o.quick ? 30 : 315, "100k", o.quick ? 3 : 41);  // 316^2 = 99856 samples
-  drag_figures(o.quick ? 60 : 999, "1m", o.quick ? 3 : 21);
+  drag_figures(o.quick ? 30 : 315, "100k", o.quick ? 3 : 60, o.quick ? 1 : 6);  // 99,856 samples
+  drag_figures(o.quick ? 60 : 999, "1m", o.quick ? 3 : 24, o.quick ? 1 : 4);
 }
 
 }  // namespace pl::bench

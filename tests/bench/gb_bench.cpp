@@ -1,22 +1,25 @@
 // GB figures: full evaluation of cagd86 (5 sides, degree 5) with second
 // derivatives, normals and curvatures; the drag update at ~1e5 samples with its influence column
-// prepared; the one-off column build at ~1e6 samples.
+// prepared; the one-off column build at ~1e6 samples. The evaluation and the drag are measured
+// with one core held busy by another process too (*_busy, and their ratios to the quiet figures).
 #include <chrono>
 #include <filesystem>
 
 #include "bench_common.hpp"
+#include "bench_patches.hpp"
+#include "core/base/parallel_for.hpp"
 #include "core/eval/patch_evaluator.hpp"
 #include "core/io/gbp_io.hpp"
 
 namespace pl::bench {
-
-namespace {
 
 // The reference model cagd86 (5 sides, degree 5) from the repository's test data.
 std::shared_ptr<GBPatch> cagd86() {
   const auto file = std::filesystem::path(PATCHLAB_TEST_DATA_DIR) / "gb" / "cagd86.gbp";
   return std::make_shared<GBPatch>(read_gbp(file));  // throws (the program fails) if it is missing
 }
+
+namespace {
 
 // density N of the regular pentagon gives 1 + 5 N (N + 1) / 2 samples.
 std::shared_ptr<const Tessellation> pentagon(int density) {
@@ -29,20 +32,23 @@ void bench_gb(const Options& o) {
   const auto patch = cagd86();
   {
     PatchEvaluator ev(patch, pentagon(o.quick ? 60 : 632));  // 1,000,141 samples
-    const double ms = median_ms(o.quick ? 2 : 7, [&] { ev.evaluate_all(); });
-    figure("gb_full_eval_msamples_per_s", ev.sample_count() / (ms * 1e3), "Msamples/s");
+    const QuietBusy t =
+        median_ms_quiet_busy(o.quick ? 2 : 8, o.quick ? 1 : 4, [&] { ev.evaluate_all(); });
+    const double ms = t.quiet, samples = double(ev.sample_count());
+    figures_quiet_busy("gb_full_eval_msamples_per_s", "Msamples/s", samples / (t.quiet * 1e3),
+                       samples / (t.busy * 1e3), "gb_full_eval_busy_over_quiet");
     // The same work one sample at a time (evaluate, differential_geometry), as evaluate_all did
     // before the batched paths: the baseline of the speed-up, in the same run.
     const auto& xs = ev.tessellation().points;
-    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(xs.size());
     std::vector<SurfaceJet> jets(xs.size());
     std::vector<SurfaceGeometry> geometry(xs.size());
     const double scalar_ms = median_ms(o.quick ? 2 : 3, [&] {
-#pragma omp parallel for schedule(static)
-      for (std::ptrdiff_t i = 0; i < n; ++i) {
-        jets[i] = patch->evaluate(xs[i]);
-        geometry[i] = differential_geometry(jets[i]);
-      }
+      parallel_chunks(xs.size(), ev.grains().evaluate, [&](std::size_t b, std::size_t e) {
+        for (std::size_t i = b; i < e; ++i) {
+          jets[i] = patch->evaluate(xs[i]);
+          geometry[i] = differential_geometry(jets[i]);
+        }
+      });
     });
     figure("gb_full_eval_scalar_msamples_per_s", ev.sample_count() / (scalar_ms * 1e3),
            "Msamples/s");
@@ -62,11 +68,11 @@ void bench_gb(const Options& o) {
     ev.prepare_influence(k);  // 100,501 samples
     Vec3 p = ev.patch().control_point(k);
     int step = 0;
-    const double ms = median_ms(o.quick ? 3 : 41, [&] {
+    const QuietBusy t = median_ms_quiet_busy(o.quick ? 3 : 60, o.quick ? 1 : 6, [&] {
       p.z += (++step % 2 ? 1e-3 : -1e-3);
       ev.move_control_point(k, p);
     });
-    figure("gb_drag_ms_100k", ms, "ms");
+    figures_quiet_busy("gb_drag_ms_100k", "ms", t.quiet, t.busy, "gb_drag_busy_over_quiet_100k");
   }
   {
     PatchEvaluator ev(std::shared_ptr<Patch>(patch->clone()), pentagon(o.quick ? 60 : 632));

@@ -1,26 +1,47 @@
 // The benchmark program: prints "figure NAME VALUE UNIT" lines. Run without arguments for real
-// figures (Release build), with --quick for a seconds-long smoke run.
-#include <omp.h>
+// figures (Release build), with --quick for a seconds-long smoke run, with --grains for the sweep
+// that chose the parallel grains, with --only NAME,... for some of the benchmarks (bezier, gb,
+// gb_face, engine, catmull_clark, cad, curve).
+#include <oneapi/tbb/info.h>
 
 #include <cstring>
+#include <string>
 
 #include "bench_common.hpp"
 
 int main(int argc, char** argv) {
   pl::bench::Options options;
-  const char* only = nullptr;  // --only NAME: that benchmark alone (e.g. --only curve)
+  std::string only;
   for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--quick") == 0) options.quick = true;
-    if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc) only = argv[++i];
+    if (std::strcmp(argv[i], "--quick") == 0) {
+      options.quick = true;
+    } else if (std::strcmp(argv[i], "--grains") == 0) {
+      options.grains = true;
+    } else if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc) {
+      only.append(",").append(argv[++i]).append(",");
+    } else {
+      std::fprintf(stderr,
+                   "usage: patchlab_bench [--quick] [--grains] [--only bezier,gb,gb_face,engine,"
+                   "catmull_clark,cad,curve]\n");
+      return 2;
+    }
   }
-  std::printf("# patchlab_bench: %d OpenMP threads%s\n", omp_get_max_threads(),
+  std::printf("# patchlab_bench: %d threads (oneTBB)%s\n", oneapi::tbb::info::default_concurrency(),
               options.quick ? " (quick mode: figures are not meaningful)" : "");
-  if (!only || std::strcmp(only, "bezier") == 0) pl::bench::bench_bezier(options);
-  if (!only || std::strcmp(only, "gb") == 0) pl::bench::bench_gb(options);
-  if (!only || std::strcmp(only, "gb_face") == 0) pl::bench::bench_gb_face(options);
-  if (!only || std::strcmp(only, "engine") == 0) pl::bench::bench_engine(options);
-  if (!only || std::strcmp(only, "catmull_clark") == 0) pl::bench::bench_catmull_clark(options);
-  if (!only || std::strcmp(only, "cad") == 0) pl::bench::bench_cad(options);
-  if (!only || std::strcmp(only, "curve") == 0) pl::bench::bench_curve(options);
+  const auto run = [&](const char* name, void (*bench)(const pl::bench::Options&)) {
+    if (only.empty() || only.find(std::string(",").append(name).append(",")) != std::string::npos)
+      bench(options);
+  };
+  if (options.grains) {
+    pl::bench::bench_grains(options);
+    return 0;
+  }
+  run("bezier", pl::bench::bench_bezier);
+  run("gb", pl::bench::bench_gb);
+  run("gb_face", pl::bench::bench_gb_face);
+  run("engine", pl::bench::bench_engine);
+  run("catmull_clark", pl::bench::bench_catmull_clark);
+  run("cad", pl::bench::bench_cad);
+  run("curve", pl::bench::bench_curve);
   return 0;
 }

@@ -55,5 +55,35 @@ TEST(DifferentialGeometry, DegenerateParameterisationIsSingularNotNaN) {
   EXPECT_TRUE(std::isfinite(g.normal.x));
 }
 
+TEST(DifferentialGeometry, CurvaturesThatOverflowAreNeverReturned) {
+  // Su, Sv the unit axes, Suu = (0, 0, c): K = 0 and H = c / 2 are finite, but H^2 overflows for
+  // c = 1e200, so the principal curvatures H -+ sqrt(H^2 - K) would be -inf and +inf. Both the
+  // one-sample and the batched path must give finite numbers (here: the sample is Singular), and
+  // the same numbers; for c = 1e100 everything is representable and must be exact.
+  for (const double c : {1e100, 1e200}) {
+    SurfaceJet s;
+    s.su = {1, 0, 0}, s.sv = {0, 1, 0}, s.suu = {0, 0, c};
+    const SurfaceGeometry one = differential_geometry(s);
+    SurfaceJet lanes[5] = {s, s, s, s, s};  // a full block of the batched form and one more
+    SurfaceGeometry many[5];
+    differential_geometry_many(lanes, many);
+    for (const SurfaceGeometry& g : {one, many[0], many[4]}) {
+      EXPECT_TRUE(std::isfinite(g.gaussian) && std::isfinite(g.mean) && std::isfinite(g.kmin) &&
+                  std::isfinite(g.kmax))
+          << c;
+      EXPECT_EQ(g.status, one.status) << c;
+      EXPECT_EQ(g.kmax, one.kmax) << c;
+    }
+    if (c == 1e100) {
+      EXPECT_EQ(one.status, GeometryStatus::Regular);
+      EXPECT_EQ(one.gaussian, 0);
+      EXPECT_EQ(one.kmin, 0);
+      EXPECT_EQ(one.kmax, c);
+    } else {
+      EXPECT_EQ(one.status, GeometryStatus::Singular);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace pl

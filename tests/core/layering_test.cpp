@@ -17,7 +17,7 @@ namespace {
 const std::map<std::string, int>& core_floors() {
   // clang-format off
   static const std::map<std::string, int> floors{
-      {"base", 0},                                // DataError
+      {"base", 0},                                // DataError, parallel loops
       {"math", 1},                                // Jet, lanes, Bernstein, vectors
       {"curve", 2}, {"domain", 2}, {"param", 2},  // curves, parameter domains, parameterizations
       {"patch", 3},                               // every patch type

@@ -30,7 +30,6 @@ mkdir -p "$dir/findings"
 export ASAN_OPTIONS="detect_odr_violation=0:allocator_may_return_null=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export LSAN_OPTIONS="suppressions=$root/tests/lsan.supp:print_suppressions=0"
-export OMP_NUM_THREADS=1
 status=0
 run() {  # target, seed folder, extra options
   local target=$1 seed=$2
