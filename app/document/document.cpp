@@ -35,7 +35,7 @@ std::string Document::execute(std::unique_ptr<Command> command) {
   Step* last = history_position_ > 0 ? &history_[history_position_ - 1] : nullptr;
   const bool merge = may_merge_ && last && !key.empty() && key == last->merge_key &&
                      history_position_ == history_.size() && saved_position_ != history_position_ &&
-                     now - last->time <= kMergeWindow;
+                     (gesture_ || now - last->time <= kMergeWindow);
   Scene before = std::exchange(scene_, std::move(next));
   if (merge) {
     last->after = scene_;
@@ -46,6 +46,16 @@ std::string Document::execute(std::unique_ptr<Command> command) {
   may_merge_ = true;
   ++revision_;
   return label;
+}
+
+void Document::begin_gesture() {
+  may_merge_ = false;
+  gesture_ = true;
+}
+
+void Document::end_gesture() {
+  may_merge_ = false;
+  gesture_ = false;
 }
 
 bool Document::undo() {

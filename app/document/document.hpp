@@ -38,6 +38,14 @@ class Document {
   std::string execute(std::unique_ptr<Command> command);
   static constexpr std::chrono::milliseconds kMergeWindow{1500};
 
+  // A gesture made of commands (a dragged normal: one command per mouse move) is one undo step
+  // however long the designer pauses: begin_gesture() ends any run of merged commands before it,
+  // and until end_gesture() a command with the previous step's merge key extends that step
+  // without the time limit. Undo, redo, a drag or a save in between still start a new step.
+  void begin_gesture();
+  void end_gesture();
+  bool in_gesture() const { return gesture_; }
+
   bool can_undo() const { return history_position_ > 0; }
   bool can_redo() const { return history_position_ < history_.size(); }
   bool undo();
@@ -92,6 +100,7 @@ class Document {
   uint64_t revision_ = 0;
   std::optional<Drag> drag_;
   bool may_merge_ = false;  // the last change was a step recorded by execute()
+  bool gesture_ = false;    // between begin_gesture() and end_gesture()
   std::function<Clock::time_point()> clock_ = [] { return Clock::now(); };
 };
 

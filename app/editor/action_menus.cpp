@@ -47,6 +47,8 @@ void draw_menu_bar(const ActionRegistry& actions) {
   for (const std::string& menu : actions.menus())
     if (ImGui::BeginMenu(menu.c_str())) {
       menu_entries(actions, menu);
+      // Esc closes an open menu, as the context menu (the editor takes no keys meanwhile).
+      if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) ImGui::CloseCurrentPopup();
       ImGui::EndMenu();
     }
   ImGui::EndMainMenuBar();
@@ -59,6 +61,8 @@ void open_context_menu() {
 bool draw_context_menu(const ActionRegistry& actions, ContextTarget target,
                        const MenuItemProbe& probe) {
   if (!ImGui::BeginPopup(kContextPopup)) return false;
+  // Esc closes it (ImGui leaves that to keyboard navigation, which the editor does not use).
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) ImGui::CloseCurrentPopup();
   const auto offered = actions.for_context(target);
   if (offered.empty()) ImGui::TextDisabled("Nothing to do here");
   std::string group;

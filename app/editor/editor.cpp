@@ -11,8 +11,12 @@
 
 #include "app/editor/action_menus.hpp"
 #include "app/editor/editor_windows.hpp"
+#include "app/editor/logic/add_edge_tool.hpp"
+#include "app/editor/logic/add_vertex_tool.hpp"
 #include "app/editor/logic/editor_paths.hpp"
+#include "app/editor/logic/make_face_tool.hpp"
 #include "app/editor/logic/select_tool.hpp"
+#include "app/editor/logic/split_edge_tool.hpp"
 #include "app/editor/side_panel.hpp"
 #include "core/base/data_error.hpp"
 
@@ -46,6 +50,10 @@ Editor::Editor(GlWindow& window, EditorOptions options, DocumentSession session)
   ui_scale_ = prefs_.ui_scale > 0 ? static_cast<float>(prefs_.ui_scale) : window_.content_scale();
   window_.apply_ui_scale(ui_scale_);
   tools_.add(std::make_unique<SelectTool>());
+  tools_.add(std::make_unique<AddVertexTool>());
+  tools_.add(std::make_unique<AddEdgeTool>());
+  tools_.add(std::make_unique<MakeFaceTool>());
+  tools_.add(std::make_unique<SplitEdgeTool>());
   register_actions();
   // A key given to two commands is a programmer's error: refuse to start (the end-to-end tests
   // start the editor, so they catch it).
@@ -85,8 +93,12 @@ PickScene Editor::pick_scene(int panel, std::vector<SelectionItem>& items) const
 }
 
 ToolContext Editor::tool_context() {
-  return {session_.doc(), selection_, nav_.camera(), work_plane_,
-          [this](const std::string& m) { status_.say(m); }};
+  return {session_.doc(),
+          selection_,
+          nav_.camera(),
+          work_plane_,
+          [this](const std::string& m) { status_.say(m); },
+          ui_scale_};
 }
 
 void Editor::after_document_replaced() {
@@ -131,7 +143,7 @@ void Editor::follow_document() {
   }
   if (doc.revision() != followed_revision_) {
     followed_revision_ = doc.revision();
-    selection_.prune(doc.scene());  // an undo or a topology edit may have removed objects
+    follow_structure();  // an undo or a topology edit may have removed or renumbered objects
   }
   // Continuity figures follow the fine surfaces only: analysing every drag step would cost
   // more than the drag itself.
@@ -169,8 +181,9 @@ int Editor::run() {
 void Editor::draw_interface(const ColorRange& range) {
   draw_menu_bar(actions_);
   const EditorLayout l = layout();
-  const SidePanel panel{prefs_,      views_,      session_.doc(), selection_, actions_,
-                        continuity_, work_plane_, tools_,         range,      ui_scale_};
+  ToolContext tools = tool_context();
+  const SidePanel panel{prefs_,      views_, session_.doc(), selection_, actions_, continuity_,
+                        work_plane_, tools_, range,          ui_scale_,  &tools};
   if (draw_side_panel(panel, l.menu_height, l.status_height)) rebuild_views(views_.compare());
 
   StatusFigures figures;
@@ -198,6 +211,7 @@ void Editor::draw_interface(const ColorRange& range) {
                       ui_scale_);
   }
   if (show_help_) draw_help_window(&show_help_, actions_, ui_scale_);
+  draw_rename();
   if (context_) {
     MenuItemProbe probe;
     // Reported once, on the third frame of the menu: ImGui lays a popup out while it is hidden
@@ -246,11 +260,13 @@ void Editor::frame() {
   f.ui_scale = ui_scale_;
   const ColorRange range = views_.colour_range(prefs_.display, session_.doc().revision());
   painter_.paint(f, range);
+  draw_tool_feedback();
   draw_interface(range);
   update_title();
   window_.end_frame();
   key_presses_.clear();
   if (debugging()) report_selection_change();
+  if (options_.debug_state) report_state();
   const auto now = Clock::now();
   // Settle time: from the release to the swap of the first frame showing the fine surfaces.
   if (release_time_ && views_.settled()) {

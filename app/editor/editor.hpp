@@ -12,8 +12,9 @@
 //   ViewportPainter   highlights, grid and overlays over the 3D view        (GL)
 // The methods below are the glue, one file per job: editor.cpp (loop, document lifetime),
 // editor_actions.cpp (the action table), editor_input.cpp (keys and mouse to actions, tools
-// and gestures), editor_files.cpp (open, save, export, screenshot), editor_debug.cpp (what
-// scripts and tests read back), drag_benchmark.cpp, pick_benchmark.cpp.
+// and gestures), editor_authoring.cpp (the selection and tools following structural edits, tool
+// feedback, renaming), editor_files.cpp (open, save, export, screenshot), editor_debug.cpp
+// (what scripts and tests read back), drag_benchmark.cpp, pick_benchmark.cpp.
 #pragma once
 
 #include <chrono>
@@ -35,6 +36,7 @@
 #include "app/editor/logic/surface_probe.hpp"
 #include "app/editor/logic/tool.hpp"
 #include "app/editor/logic/view_navigator.hpp"
+#include "app/editor/rename_popup.hpp"
 #include "app/editor/scene_views.hpp"
 #include "app/editor/viewport_painter.hpp"
 #include "render/scene_renderer.hpp"
@@ -48,6 +50,10 @@ struct EditorOptions {
   // Objects whose window position is printed once the view is shown ("vertex 2", "face 1",
   // "edge 3"); with any, selection changes, context-menu items and saves are printed too.
   std::vector<SelectionItem> debug_items;
+  // Print the editor's state at rest after every change (document counts, where every vertex,
+  // edge, face and normal knob is on screen, the view's projection, pointer presses, status
+  // messages): what the authoring end-to-end test waits for and clicks on.
+  bool debug_state = false;
   int width = 1440, height = 900;
   bool compare = false;                             // start split: Gregory | GB
   std::optional<std::filesystem::path> screenshot;  // write one, then quit (scripts, docs)
@@ -72,10 +78,12 @@ class Editor {
     PickResult under;    // what lies under the cursor this frame
     PickResult pressed;  // what lay under it at the last press (a click acts on it)
     int pressed_panel = -1;
-    std::optional<Vec3> pressed_point;  // the world point under the last press, if any
-    bool tool_has_it = false;           // the active tool took the left press
-    bool context_press = false;         // a right press that may end as a click: the context menu
+    std::optional<Vec3> pressed_point;      // the world point under the last press, if any
+    std::optional<Vec3> pressed_placement;  // where a new vertex would go at the last press
+    bool tool_has_it = false;               // the active tool took the left press
+    bool context_press = false;  // a right press that may end as a click: the context menu
     std::optional<ProbeHit> probe;
+    uint64_t structure = 0;  // the network structure `under` and `pressed` were picked in
   };
 
   // editor.cpp
@@ -92,6 +100,12 @@ class Editor {
 
   // editor_actions.cpp
   void register_actions();
+
+  // editor_authoring.cpp
+  void follow_structure();
+  void draw_tool_feedback();
+  void start_rename();
+  void draw_rename();
 
   // editor_input.cpp
   void handle_keys();
@@ -116,7 +130,8 @@ class Editor {
   void report_debug_items();
   void report_selection_change();
   void report_menu_item(const std::string& label, float x0, float y0, float x1, float y1);
-  bool debugging() const { return !options_.debug_items.empty(); }
+  void report_state();
+  bool debugging() const { return !options_.debug_items.empty() || options_.debug_state; }
 
   // The menus, panels and windows, given the parts they show; `range` is the colour range shown.
   void draw_interface(const ColorRange& range);
@@ -149,7 +164,11 @@ class Editor {
     bool positions = false;
     uint64_t selection = 0;
     int menu_frames = 0;
+    std::string state;        // the last state report (printed again only when it changes)
+    std::string message;      // the last status message printed
+    bool text_input = false;  // a text field had the keyboard
   } debug_;
+  RenamePopup rename_;
 
   // Key presses since the last frame (key, mods): ImGui 1.86 keeps only the key state, so a press
   // and release between two frames (xdotool, a fast typist) would be lost. Dropped files too.

@@ -4,6 +4,9 @@
 #include <algorithm>
 
 #include "app/editor/editor.hpp"
+#include "app/editor/logic/add_vertex_tool.hpp"
+#include "app/editor/logic/authoring_actions.hpp"
+#include "app/editor/logic/make_face_tool.hpp"
 #include "app/editor/logic/selection_actions.hpp"
 #include "app/editor/logic/selection_properties.hpp"
 
@@ -58,8 +61,14 @@ void Editor::register_actions() {
   // Edit
   Action undo = make_action("edit.undo", "Edit", "Undo", {"Ctrl+Z"}, "undo", [this] {
     ToolContext ctx = tool_context();
+    const bool held = mouse_.tool_has_it;
     tools_.active().cancel(ctx);
-    session_.doc().undo();
+    mouse_.tool_has_it = false;
+    // During a drag, undo takes back the drag only.
+    if (held || session_.doc().dragging())
+      session_.doc().cancel_drag();
+    else
+      session_.doc().undo();
   });
   undo.detail = [this] { return session_.doc().undo_label(); };
   undo.enabled = [this] { return session_.doc().can_undo() || session_.doc().dragging(); };
@@ -68,6 +77,7 @@ void Editor::register_actions() {
       make_action("edit.redo", "Edit", "Redo", {"Ctrl+Shift+Z", "Ctrl+Y"}, "redo", [this] {
         ToolContext ctx = tool_context();
         tools_.active().cancel(ctx);
+        mouse_.tool_has_it = false;
         session_.doc().redo();
       });
   redo.detail = [this] { return session_.doc().redo_label(); };
@@ -94,8 +104,40 @@ void Editor::register_actions() {
   nudge.enabled = [this] { return !selection_.points().empty(); };
   r.add(std::move(nudge));
 
-  // Select and Face (GUI-free, shared with the tests)
-  add_selection_actions(r, session_.doc(), selection_);
+  // Select, Face and Network (GUI-free, shared with the tests)
+  const Say say = [this](const std::string& m) { status_.say(m); };
+  add_selection_actions(r, session_.doc(), selection_, say);
+  AuthoringHooks hooks;
+  hooks.say = say;
+  hooks.towards = [this] { return towards_viewer(nav_.camera()); };
+  // "Split Edge" from the right-click menu on an edge splits it where it was clicked.
+  hooks.split_parameter = [this](int e) -> std::optional<double> {
+    if (context_ == ContextTarget::Edge && mouse_.pressed.edge == e) return mouse_.pressed.edge_t;
+    return std::nullopt;
+  };
+  Action vertex_here = make_action(
+      "network.add_vertex_here", "Network", "Add Vertex Here", {},
+      "from the right-click menu: a vertex where it was opened, on the surface there or else on "
+      "the work plane (the Add Vertex tool, V, adds one per click)",
+      [this] {
+        ToolContext ctx = tool_context();
+        AddVertexTool().add_at(ctx, *mouse_.pressed_placement);
+      });
+  vertex_here.context = context_bit(ContextTarget::Empty) | context_bit(ContextTarget::Face);
+  vertex_here.enabled = [this] {
+    return (context_ == ContextTarget::Empty || context_ == ContextTarget::Face) &&
+           mouse_.pressed_placement.has_value();
+  };
+  r.add(std::move(vertex_here));
+  add_authoring_actions(r, session_.doc(), selection_, hooks);
+  Action rename = make_action("edit.rename", "Edit", "Rename...", {"F2"},
+                              "name the selected face or edge", [this] { start_rename(); });
+  rename.context = context_bit(ContextTarget::Face) | context_bit(ContextTarget::Edge);
+  rename.enabled = [this] {
+    return selection_.size() == 1 &&
+           (selection_.has(SelectionItem::Kind::Face) || selection_.has(SelectionItem::Kind::Edge));
+  };
+  r.add(std::move(rename));
 
   // View
   Action all = make_action("view.frame_all", "View", "Frame All", {"F"}, "frame all",
@@ -199,10 +241,23 @@ void Editor::register_actions() {
     Action a = make_action(id, "Tools", tool.name(), keys, tool.hint(), [this, i] {
       ToolContext ctx = tool_context();
       tools_.activate(i, ctx);
+      if (tools_.active().places_on_work_plane()) work_plane_.shown = true;
     });
     a.checked = [this, i] { return tools_.active_index() == i; };
     r.add(std::move(a));
   }
+
+  Action finish = make_action("tool.finish", "Tools", "Finish", {"Enter"},
+                              "complete what the tool has picked (Make Face: the face)", [this] {
+                                ToolContext ctx = tool_context();
+                                tools_.active().finish(ctx);
+                              });
+  finish.separator_before = true;
+  finish.enabled = [this] {
+    ToolContext ctx = tool_context();
+    return tools_.active().can_finish(ctx);
+  };
+  r.add(std::move(finish));
 
   // Help
   Action help = make_action("help.keys", "Help", "Mouse and Keys", {"F1"}, "this list",

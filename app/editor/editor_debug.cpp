@@ -7,13 +7,30 @@
 //   selection: ITEM, ITEM, ...            (after every change; "selection: none" when empty)
 //   menu-item LABEL X Y window WX WY      (the centre of each context-menu item, once laid out)
 //   saved PATH revision N
+// With --debug-state, also (window pixels relative to the window, like the lines above):
+//   pointer down|up B X Y [shift] [ctrl] [alt]   (as the frame saw the press or release)
+//   pointer at X Y                               (the cursor moved while a button is held)
+//   status MESSAGE                               (every new status-bar message)
+//   text-input 1|0                               (a text field took or gave up the keyboard)
+// and, whenever it changed, the state at rest (no button held, no drag, fine surfaces shown):
+//   state revision R vertices V edges E faces F selected N can-undo U can-redo D tool NAME
+//   view OX OY XX XY YX YY ZX ZY window WX WY    (pixels of the world origin and of the unit
+//                                                 points on x, y, z: affine in orthographic)
+//   vertex I X Y
+//   edge I X Y | edge I hidden                   (a pixel that picks the edge's curve)
+//   face I X Y | face I hidden                   (a pixel that picks the face's surface)
+//   knob V X Y                                   (the normal knob of a selected vertex)
+//   state-end R
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#include <imgui.h>
 
 #include <cstdio>
 #include <iostream>
+#include <sstream>
 
 #include "app/editor/editor.hpp"
+#include "app/editor/logic/plane_handles.hpp"
 
 namespace pl {
 
@@ -68,6 +85,84 @@ void Editor::report_menu_item(const std::string& label, float x0, float y0, floa
   std::printf("menu-item %s %.1f %.1f window %d %d\n", label.c_str(), 0.5 * (x0 + x1),
               0.5 * (y0 + y1), wx, wy);
   std::fflush(stdout);
+}
+
+namespace {
+
+std::string pixel(const std::optional<Vec2>& p) {
+  if (!p) return "hidden";
+  char b[64];
+  std::snprintf(b, sizeof b, "%.1f %.1f", p->x, p->y);
+  return b;
+}
+
+}  // namespace
+
+void Editor::report_state() {
+  const ImGuiIO& io = ImGui::GetIO();
+  // What the pointer did this frame, as the editor saw it.
+  for (int b = 0; b < 3; ++b) {
+    const char* what = ImGui::IsMouseClicked(b) ? "down" : ImGui::IsMouseReleased(b) ? "up" : "";
+    if (!*what) continue;
+    std::printf("pointer %s %d %.0f %.0f%s%s%s\n", what, b, io.MousePos.x, io.MousePos.y,
+                io.KeyShift ? " shift" : "", io.KeyCtrl ? " ctrl" : "", io.KeyAlt ? " alt" : "");
+  }
+  const bool held = io.MouseDown[0] || io.MouseDown[1] || io.MouseDown[2];
+  if (held && (io.MouseDelta.x != 0 || io.MouseDelta.y != 0))
+    std::printf("pointer at %.0f %.0f\n", io.MousePos.x, io.MousePos.y);
+  if (io.WantTextInput != debug_.text_input) {
+    debug_.text_input = io.WantTextInput;
+    std::printf("text-input %d\n", int(io.WantTextInput));
+  }
+  const std::string message = status_.message();
+  if (message != debug_.message) {
+    debug_.message = message;
+    if (!message.empty()) std::printf("status %s\n", message.c_str());
+  }
+  std::fflush(stdout);
+
+  const Document& doc = session_.doc();
+  if (held || frames_ < 3 || !views_.ready() || !views_.settled() || doc.dragging()) return;
+  const Scene& scene = doc.scene();
+  const auto rects = layout().panels(views_.compare());
+  const Camera& camera = nav_.camera();
+  const Network none;
+  const Network& net = scene.network ? *scene.network : none;
+  std::ostringstream out;
+  out << "state revision " << doc.revision() << " vertices " << net.vertices.size() << " edges "
+      << net.edges.size() << " faces " << net.faces.size() << " selected " << selection_.size()
+      << " can-undo " << doc.can_undo() << " can-redo " << doc.can_redo() << " tool "
+      << tools_.active().name() << "\n";
+  int wx = 0, wy = 0;
+  glfwGetWindowPos(window_.handle(), &wx, &wy);
+  out << "view";
+  for (const Vec3& p : {Vec3(0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)})
+    out << " " << pixel(project_to_window(camera, rects[0], p));
+  out << " window " << wx << " " << wy << "\n";
+  for (std::size_t v = 0; v < net.vertices.size(); ++v)
+    out << "vertex " << v << " " << pixel(project_to_window(camera, rects[0], net.vertices[v]))
+        << "\n";
+  std::vector<SelectionItem> items;
+  const PickScene picks = pick_scene(0, items);
+  const DisplaySettings& d = prefs_.display;
+  for (std::size_t e = 0; e < net.edges.size(); ++e)
+    out << "edge " << e << " "
+        << pixel(find_pixel_for(pickers_[0], picks, camera, rects[0], SelectionItem::edge(int(e)),
+                                {d.control_net, d.network_curves}))
+        << "\n";
+  for (std::size_t f = 0; f < net.faces.size(); ++f)
+    out << "face " << f << " "
+        << pixel(find_pixel_for(pickers_[0], picks, camera, rects[0], SelectionItem::face(int(f)),
+                                {d.control_net, d.network_curves}))
+        << "\n";
+  if (tools_.active_index() == 0)
+    for (const PlaneHandle& h : plane_handles(scene, selection_, camera, rects[0], ui_scale_))
+      out << "knob " << h.vertex << " " << pixel(project_to_window(camera, rects[0], h.knob))
+          << "\n";
+  const std::string state = out.str();
+  if (state == debug_.state) return;
+  debug_.state = state;
+  std::cout << state << "state-end " << doc.revision() << std::endl;
 }
 
 }  // namespace pl

@@ -22,6 +22,13 @@ std::vector<HelpRow> mouse_help() {
       {"Click on empty space", "clear the selection"},
       {"Drag a point", "move the selected points in the view plane"},
       {"  ... holding X / Y / Z", "move along that axis"},
+      {"  ... a handle", "it stays in its vertex's tangent plane (G1 kept)"},
+      {"  ... a handle holding Alt", "it moves freely; its vertex's tangent plane turns with it"},
+      {"Drag a normal's knob", "turn the selected vertex's tangent plane (the disc)"},
+      {"Click (Add Vertex)", "a vertex on the surface under the cursor, else on the work plane"},
+      {"Click, click (Add Edge)", "an edge between the two vertices; the chain goes on"},
+      {"Clicks, Enter (Make Face)", "a face on the vertices (or edges) clicked"},
+      {"Click a curve (Split Edge)", "split its edge there"},
       {"Left-drag elsewhere", "orbit (turntable; about the selection if any)"},
       {"Right- or middle-drag", "pan"},
       {"Right-click", "what can be done with the object under the cursor"},
@@ -80,7 +87,10 @@ void Editor::nudge_selection(const KeyChord& k) {
   const Scene& scene = session_.doc().scene();
   std::vector<Vec3> positions;
   for (const PointRef& r : points) positions.push_back(point_position(scene, r) + d);
-  session_.doc().execute(std::make_unique<MovePointsCommand>(points, positions));
+  // Consecutive nudges of the same points are one undo step; handles stay in their planes.
+  run_command(
+      session_.doc(), [this](const std::string& m) { status_.say(m); },
+      std::make_shared<MovePointsCommand>(points, positions, HandleMode::KeepPlane, true));
 }
 
 void Editor::escape() {
@@ -110,7 +120,7 @@ void Editor::handle_keys() {
     if (session_.serial() != session_serial_)
       after_document_replaced();
     else
-      selection_.prune(session_.doc().scene());
+      follow_structure();
   }
 }
 
@@ -185,6 +195,7 @@ void Editor::handle_mouse() {
   mouse_.probe.reset();
   if (mouse_.panel < 0 || io.WantCaptureMouse || !views_.ready()) {
     mouse_.panel = -1;
+    tools_.active().leave();
     return;
   }
   const ViewRect& rect = rects[mouse_.panel];
@@ -193,12 +204,15 @@ void Editor::handle_mouse() {
   const DisplaySettings& d = prefs_.display;
   mouse_.under = pickers_[mouse_.panel].pick(scene, nav_.camera(), rect, mouse,
                                              {d.control_net, d.network_curves});
-  if (prefs_.show_probe && mouse_.under.point < 0 && mouse_.under.surface) {
+  // The probe reads the surface itself: over a point or a curve it would hide what is picked.
+  if (prefs_.show_probe && mouse_.under.point < 0 && mouse_.under.edge < 0 &&
+      mouse_.under.surface) {
     const SurfaceHit& h = *mouse_.under.surface;
     mouse_.probe =
         probe_at(scene.meshes[h.surface], h.surface, h.hit, window_ray(nav_.camera(), rect, mouse));
   }
 
+  tools_.active().hover(ctx, pointer_event(rect, &mouse_.under));
   nav_.wheel(rect, mouse, io.MouseWheel);
 
   const bool left = ImGui::IsMouseClicked(0), right = ImGui::IsMouseClicked(1),
@@ -207,6 +221,7 @@ void Editor::handle_mouse() {
   mouse_.pressed = mouse_.under;
   mouse_.pressed_panel = mouse_.panel;
   mouse_.pressed_point.reset();
+  mouse_.pressed_placement = placement(ctx, pointer_event(rect, &mouse_.pressed));
   if (mouse_.under.point >= 0)
     mouse_.pressed_point = scene.points->positions[mouse_.under.point];
   else if (mouse_.under.surface)

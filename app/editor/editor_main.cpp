@@ -70,6 +70,8 @@ int run_editor(std::span<const std::string> args, std::ostream& out, std::ostrea
         return 2;
       }
       o.debug_items.push_back(*item);
+    } else if (a == "--debug-state") {
+      o.debug_state = true;
     } else if (a == "--compare") {
       o.compare = true;
     } else if (a == "--screenshot") {
@@ -88,7 +90,7 @@ int run_editor(std::span<const std::string> args, std::ostream& out, std::ostrea
     } else if (a.rfind("--", 0) == 0) {
       err << "patchlab: unknown editor option " << a << "\n"
           << "usage: patchlab [FILE] [--size WxH] [--compare] [--screenshot OUT.png] "
-             "[--bench-drag] [--bench-pick] [--debug-point NAME]...\n";
+             "[--bench-drag] [--bench-pick] [--debug-point NAME]... [--debug-state]\n";
       return 2;
     } else if (!o.file) {
       o.file = a;

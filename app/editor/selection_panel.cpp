@@ -1,10 +1,15 @@
 // The Selection section: the properties of a single selected object (face: sides, scheme,
-// name; edge: name, ends, length, faces; vertex: tangent plane fitted or fixed; patch: type),
-// or a summary of several, and typed coordinates for the selected points.
+// name; edge: name, ends, length, faces; vertex: tangent plane fitted or fixed, its normal;
+// patch: type), or a summary of several, and typed coordinates for the selected points. Every
+// field that changes the document runs a command (one undo step) when it is left or Enter is
+// pressed; a refusal shows in the status bar.
 #include <imgui.h>
 
 #include <cmath>
+#include <cstring>
 
+#include "app/document/network_commands.hpp"
+#include "app/editor/logic/plane_handles.hpp"
 #include "app/editor/logic/selection_properties.hpp"
 #include "app/editor/side_panel.hpp"
 
@@ -47,32 +52,88 @@ void scheme_row(const SidePanel& p) {
   ImGui::NewLine();
 }
 
+// Runs a command from a panel field, its label or refusal going to the status bar.
+void run(const SidePanel& p, std::shared_ptr<Command> c) {
+  if (p.tool_context)
+    run_command(*p.tool_context, std::move(c));
+  else
+    run_command(p.doc, {}, std::move(c));
+}
+
+// An editable name: applied (one command) when the field is left or Enter pressed, and only
+// when it changed. `key` tells objects apart, so a field being typed in is not refilled.
+void name_field(const SidePanel& p, const std::string& name, const std::string& key,
+                const std::function<std::shared_ptr<Command>(const std::string&)>& command) {
+  static char edit[256];
+  static std::string editing;  // the key of the object whose name is being typed
+  if (editing != key) std::snprintf(edit, sizeof edit, "%s", name.c_str());
+  ImGui::TextDisabled("name");
+  ImGui::SameLine(ImGui::GetFontSize() * 6);
+  ImGui::SetNextItemWidth(-1);
+  ImGui::InputTextWithHint(("##name" + key).c_str(), "(no name)", edit, sizeof edit);
+  editing = ImGui::IsItemActive() ? key : std::string();
+  if (ImGui::IsItemDeactivatedAfterEdit() && name != edit) run(p, command(edit));
+}
+
 void face_section(const SidePanel& p, const FaceProperties& f) {
-  field("name", or_none(f.name));
+  name_field(p, f.name, "face" + std::to_string(f.face),
+             [&](const std::string& n) { return std::make_shared<SetFaceNameCommand>(f.face, n); });
   field("sides", std::to_string(f.sides));
   scheme_row(p);
   if (f.scheme == FaceScheme::Auto) field("filled as", scheme_name(f.resolved));
 }
 
-void edge_section(const EdgeProperties& e) {
-  field("name", or_none(e.name));
+void edge_section(const SidePanel& p, const EdgeProperties& e) {
+  name_field(p, e.name, "edge" + std::to_string(e.edge),
+             [&](const std::string& n) { return std::make_shared<SetEdgeNameCommand>(e.edge, n); });
   field("vertices", std::to_string(e.from) + " -> " + std::to_string(e.to));
   field("length", fmt("%.6g", e.length));
+  // Named as faces, so that "face 0" does not read as a count.
   std::string faces;
-  for (int f : e.faces) faces += (faces.empty() ? "" : ", ") + std::to_string(f);
-  field("faces", faces.empty() ? "none (a boundary of nothing)" : faces);
+  for (int f : e.faces) faces += (faces.empty() ? "" : " and ") + std::to_string(f);
+  field("faces", e.faces.empty()       ? "none (a boundary of nothing)"
+                 : e.faces.size() == 1 ? "face " + faces
+                                       : "faces " + faces);
 }
 
-void vertex_section(const VertexProperties& v) {
+// The vertex's tangent plane: fitted to its edges or fixed (through the Network > Tangent Plane
+// actions, one undo step), and its normal, typed (fixes the plane, turning the handles with it).
+void vertex_section(const SidePanel& p, const VertexProperties& v) {
   field("edges", std::to_string(v.edges));
-  if (v.tangent_plane_fixed) {
-    const Vec3 n = *v.normal;
-    char b[96];
-    std::snprintf(b, sizeof b, "fixed, normal %.4g %.4g %.4g", n.x, n.y, n.z);
-    field("tangent", b);
-  } else {
-    field("tangent", "fitted to the edges");
+  ImGui::TextDisabled("tangent");
+  ImGui::SameLine(ImGui::GetFontSize() * 6);
+  for (const char* id : {"network.plane_fitted", "network.plane_fixed"}) {
+    const Action* a = p.actions.find(id);
+    if (!a) continue;
+    const bool on = a->checked && a->checked();
+    ImGui::BeginDisabled(!on && !p.actions.is_enabled(*a));
+    if (ImGui::RadioButton(a->label.c_str(), on) && !on) p.actions.run(id);
+    ImGui::EndDisabled();
+    ImGui::SameLine();
   }
+  ImGui::NewLine();
+  const auto plane = vertex_plane(*p.doc.scene().network, v.vertex);
+  if (!plane) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("no plane yet: it needs two edges that are not in line");
+    ImGui::PopStyleColor();
+    return;
+  }
+  // The normal shown is the stored one when fixed, else the fitted plane's.
+  const Vec3 n = v.normal ? *v.normal : plane->normal;
+  static double edit[3];
+  static int editing = -1;  // the vertex whose normal is being typed
+  if (editing != v.vertex) edit[0] = n.x, edit[1] = n.y, edit[2] = n.z;
+  ImGui::TextDisabled("normal");
+  ImGui::SameLine(ImGui::GetFontSize() * 6);
+  ImGui::SetNextItemWidth(-1);
+  ImGui::InputScalarN("##normal", ImGuiDataType_Double, edit, 3, nullptr, nullptr, "%.4g");
+  editing = ImGui::IsItemActive() ? v.vertex : -1;
+  if (ImGui::IsItemDeactivatedAfterEdit()) {
+    const Vec3 typed(edit[0], edit[1], edit[2]);
+    if (typed != n) run(p, std::make_shared<SetVertexNormalCommand>(v.vertex, typed));
+  }
+  ImGui::TextDisabled("Drag the knob in the view to turn it.");
 }
 
 void patch_section(const PatchProperties& q) {
@@ -99,7 +160,7 @@ void coordinates(const SidePanel& p, const std::vector<PointRef>& points) {
     if (std::isfinite(d.x) && std::isfinite(d.y) && std::isfinite(d.z) && d != Vec3(0)) {
       std::vector<Vec3> positions;
       for (const PointRef& r : points) positions.push_back(point_position(scene, r) + d);
-      p.doc.execute(std::make_unique<MovePointsCommand>(points, positions));
+      run(p, std::make_shared<MovePointsCommand>(points, positions));
     }
   }
 }
@@ -125,10 +186,10 @@ void draw_selection_section(const SidePanel& p) {
     const SelectionItem& i = present[0];
     ImGui::Text("%s", describe(i).c_str());
     if (i.kind == Kind::Face) face_section(p, *face_properties(scene, i.index));
-    if (i.kind == Kind::Edge) edge_section(*edge_properties(scene, i.index));
+    if (i.kind == Kind::Edge) edge_section(p, *edge_properties(scene, i.index));
     if (i.kind == Kind::Patch) patch_section(*patch_properties(scene, i.index));
     if (i.kind == Kind::Point && i.point.kind == PointRef::Kind::NetworkVertex)
-      vertex_section(*vertex_properties(scene, i.point.index));
+      vertex_section(p, *vertex_properties(scene, i.point.index));
   } else {
     int counts[4] = {0, 0, 0, 0};
     for (const SelectionItem& i : present) ++counts[int(i.kind)];

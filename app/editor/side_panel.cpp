@@ -39,7 +39,13 @@ void draw_tools_section(const SidePanel& p) {
   for (const ActionRegistry::Entry& e : p.actions.entries("Tools")) {
     if (!e.action) continue;
     const Action& a = *e.action;
-    if (!first) ImGui::SameLine();
+    if (a.id == "tool.finish") continue;  // a command of the tools, not a tool
+    // Buttons flow on to the next line when the panel is too narrow for them.
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float w = ImGui::CalcTextSize(a.label.c_str()).x + 2 * style.FramePadding.x;
+    if (!first && ImGui::GetItemRectMax().x + style.ItemSpacing.x + w <
+                      ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x)
+      ImGui::SameLine();
     first = false;
     const bool on = a.checked && a.checked();
     if (on) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
@@ -52,6 +58,7 @@ void draw_tools_section(const SidePanel& p) {
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
   ImGui::TextWrapped("%s", p.tools.active().hint().c_str());
   ImGui::PopStyleColor();
+  draw_tool_options(p);
 }
 
 void draw_work_plane_section(const SidePanel& p) {

@@ -24,6 +24,7 @@ struct SidePanel {
   ToolBox& tools;
   ColorRange range;  // the colour range shown (a "fixed range" starts from it)
   float ui_scale = 1;
+  ToolContext* tool_context = nullptr;  // what the active tool's options act through
 };
 
 // Draws the panel at the right of the window, between the bars. Returns true when the
@@ -31,6 +32,8 @@ struct SidePanel {
 bool draw_side_panel(const SidePanel& p, double top, double bottom);
 
 void draw_tools_section(const SidePanel& p);
+// The active tool's own fields below its hint (typed coordinates of a new vertex).
+void draw_tool_options(const SidePanel& p);
 void draw_selection_section(const SidePanel& p);
 // Returns true when the densities changed.
 bool draw_display_section(const SidePanel& p);

@@ -144,4 +144,95 @@ void draw_error_text(const ViewRect& r, const std::string& text) {
                                           rgba(1, 0.55f, 0.5f), text.c_str());
 }
 
+namespace {
+
+// A dashed line: dashes and gaps of `dash` pixels.
+void dashed_line(ImDrawList* dl, const Vec2& a, const Vec2& b, ImU32 colour, float width,
+                 float dash) {
+  const double length = glm::length(b - a);
+  if (!(length > 0)) return;
+  const Vec2 step = (b - a) / length;
+  for (double s = 0; s < length; s += 2 * dash)
+    dl->AddLine(im(a + s * step), im(a + std::min(s + dash, length) * step), colour, width);
+}
+
+}  // namespace
+
+void draw_tool_overlays(const ViewRect& rect, const Camera& camera, const ToolPreview& preview,
+                        const std::vector<PlaneHandle>& planes, int hot, float s) {
+  if (preview.empty() && planes.empty()) return;
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  dl->PushClipRect(ImVec2(float(rect.x), float(rect.y)),
+                   ImVec2(float(rect.x + rect.width), float(rect.y + rect.height)), true);
+  const WindowProjector screen(camera, rect);
+  const ImU32 accent = rgba(kAccent[0], kAccent[1], kAccent[2]);
+  const ImU32 ink = rgba(0.08f, 0.08f, 0.1f, 0.9f);
+
+  for (std::size_t i = 0; i < planes.size(); ++i) {
+    const PlaneHandle& h = planes[i];
+    // The disc: a circle in the plane, filled faintly so its tilt reads at a glance.
+    const Vec3 a = std::abs(h.normal.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+    const Vec3 u = glm::normalize(glm::cross(h.normal, a)), v = glm::cross(h.normal, u);
+    std::vector<ImVec2> rim;
+    constexpr int kRim = 48;
+    for (int k = 0; k < kRim; ++k) {
+      const double t = 2 * M_PI * k / kRim;
+      if (const auto q = screen(h.centre + h.radius * (std::cos(t) * u + std::sin(t) * v)))
+        rim.push_back(im(*q));
+    }
+    const auto c = screen(h.centre), knob = screen(h.knob);
+    if (rim.size() == kRim && c) {
+      const ImU32 fill = h.fixed ? rgba(kAccent[0], kAccent[1], kAccent[2], 0.22f)
+                                 : rgba(0.45f, 0.62f, 0.9f, 0.22f);
+      // An ellipse on screen: convex; ImGui's anti-aliased fill wants it clockwise (y down).
+      double area = 0;
+      for (int k = 0; k < kRim; ++k)
+        area += double(rim[k].x) * rim[(k + 1) % kRim].y - double(rim[(k + 1) % kRim].x) * rim[k].y;
+      if (area < 0) std::reverse(rim.begin(), rim.end());
+      dl->AddConvexPolyFilled(rim.data(), kRim, fill);
+      dl->AddPolyline(rim.data(), kRim, h.fixed ? accent : rgba(0.45f, 0.62f, 0.9f, 0.95f),
+                      ImDrawFlags_Closed, 1.8f * s);
+    }
+    if (c && knob) {
+      dl->AddLine(im(*c), im(*knob), ink, 2.0f * s);
+      const bool is_hot = int(i) == hot;
+      dl->AddCircleFilled(im(*knob), (is_hot ? 7.0f : 5.5f) * s, is_hot ? rgba(1, 1, 1) : accent);
+      dl->AddCircle(im(*knob), (is_hot ? 7.0f : 5.5f) * s, ink, 0, 1.5f * s);
+      if (is_hot)
+        ImGui::SetTooltip("vertex %d: drag to turn its tangent plane (%s)", h.vertex,
+                          h.fixed ? "fixed" : "fitted; dragging fixes it");
+    }
+  }
+
+  for (const std::vector<Vec3>& line : preview.lines) {
+    std::vector<ImVec2> pts;
+    for (const Vec3& p : line)
+      if (const auto q = screen(p)) pts.push_back(im(*q));
+    dl->AddPolyline(pts.data(), int(pts.size()), accent, 0, 3.0f * s);
+  }
+  for (const auto& [a, b] : preview.pending) {
+    const auto qa = screen(a), qb = screen(b);
+    if (qa && qb) dashed_line(dl, *qa, *qb, ink, 1.8f * s, 6.0f * s);
+  }
+  // Picked points: white rings (the selection is filled), numbered in the order picked.
+  for (std::size_t i = 0; i < preview.picked.size(); ++i)
+    if (const auto q = screen(preview.picked[i])) {
+      dl->AddCircleFilled(im(*q), 7.5f * s, rgba(1, 1, 1));
+      dl->AddCircle(im(*q), 7.5f * s, accent, 0, 3.0f * s);
+      if (preview.picked.size() > 1)
+        dl->AddText(ImVec2(float(q->x) + 9 * s, float(q->y) - 19 * s), ink,
+                    std::to_string(i + 1).c_str());
+    }
+  if (preview.target)
+    if (const auto q = screen(*preview.target)) {
+      // A ring with a cross: where a click adds or splits.
+      const ImVec2 m = im(*q);
+      const float r = 7.0f * s;
+      dl->AddCircle(m, r, ink, 0, 2.0f * s);
+      dl->AddLine(ImVec2(m.x - 1.6f * r, m.y), ImVec2(m.x + 1.6f * r, m.y), ink, 1.2f * s);
+      dl->AddLine(ImVec2(m.x, m.y - 1.6f * r), ImVec2(m.x, m.y + 1.6f * r), ink, 1.2f * s);
+    }
+  dl->PopClipRect();
+}
+
 }  // namespace pl

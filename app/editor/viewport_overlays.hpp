@@ -1,6 +1,7 @@
 // The 2D overlays over a view panel, drawn with ImGui's background list (crisp at any scale, no
 // GL programs): selected and hovered points with their tooltips, the worst continuity edge, the
-// probe's mark, the comparison's panel labels, the axis triad and the colour legend.
+// probe's mark, the comparison's panel labels, the axis triad, the colour legend, the tools'
+// feedback and the tangent-plane discs of selected vertices.
 #pragma once
 
 #include <optional>
@@ -8,9 +9,11 @@
 
 #include "app/editor/logic/continuity_monitor.hpp"
 #include "app/editor/logic/live_surfaces.hpp"
+#include "app/editor/logic/plane_handles.hpp"
 #include "app/editor/logic/preferences.hpp"
 #include "app/editor/logic/scene_picker.hpp"
 #include "app/editor/logic/surface_probe.hpp"
+#include "app/editor/logic/tool.hpp"
 
 namespace pl {
 
@@ -33,5 +36,10 @@ void draw_axis_triad(const OverlayFrame& o);
 void draw_legend(const ViewRect& rect, const ColorRange& range, const std::string& title,
                  float ui_scale);
 void draw_error_text(const ViewRect& rect, const std::string& text);
+// The active tool's feedback (picked points and lines, the dashed rubber band, the mark where a
+// click acts) and the tangent planes of selected vertices (a disc in the plane, the normal with
+// its knob; `hot` is the knob under the cursor, -1 if none).
+void draw_tool_overlays(const ViewRect& rect, const Camera& camera, const ToolPreview& preview,
+                        const std::vector<PlaneHandle>& planes, int hot, float ui_scale);
 
 }  // namespace pl

@@ -161,6 +161,42 @@ TEST(Document, NudgesOfTheSamePointsMergeIntoOneStepForAMoment) {
   EXPECT_FALSE(doc.dirty());  // the saved state is a step boundary
 }
 
+TEST(Document, AGestureOfCommandsIsOneStepHoweverLongItPauses) {
+  Scene scene = read_scene(std::filesystem::path(PATCHLAB_SOURCE_DIR) / "assets/default.json");
+  Document doc(scene);
+  auto now = Document::Clock::time_point();
+  doc.set_clock([&] { return now; });
+  const std::string original = scene_to_json(doc.scene());
+  const auto turn = [&](double x) {
+    now += std::chrono::seconds(3);  // longer than the merge window
+    doc.execute(std::make_unique<SetVertexNormalCommand>(1, Vec3(x, 0.1, 1), true));
+  };
+  doc.begin_gesture();
+  EXPECT_TRUE(doc.in_gesture());
+  for (double x : {0.1, 0.2, 0.3}) turn(x);
+  doc.end_gesture();
+  const std::string turned = scene_to_json(doc.scene());
+  ASSERT_TRUE(doc.undo());
+  EXPECT_EQ(scene_to_json(doc.scene()), original);  // three commands, one step
+  EXPECT_FALSE(doc.can_undo());
+  ASSERT_TRUE(doc.redo());
+  EXPECT_EQ(scene_to_json(doc.scene()), turned);
+
+  // A second gesture on the same vertex right after the first is a step of its own.
+  doc.begin_gesture();
+  now -= std::chrono::seconds(3);  // within the merge window of the last command
+  turn(0.4);
+  doc.end_gesture();
+  ASSERT_TRUE(doc.undo());
+  EXPECT_EQ(scene_to_json(doc.scene()), turned);
+  // Outside a gesture the window applies again: a pause starts a new step.
+  turn(0.5);
+  turn(0.6);
+  ASSERT_TRUE(doc.undo());
+  ASSERT_TRUE(doc.undo());
+  EXPECT_EQ(scene_to_json(doc.scene()), turned);
+}
+
 // The scene every handle-mode test starts from: the default scene, whose vertex 1 has three
 // edges (two faces meet there).
 Scene default_scene() {

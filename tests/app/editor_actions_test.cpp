@@ -80,29 +80,43 @@ TEST(EditorActions, MenusKeysAndContext) {
 
   ASSERT_EQ(r.for_context(ContextTarget::Face).size(), 1u);
   EXPECT_TRUE(r.for_context(ContextTarget::Empty).empty());
+  // One menu's actions come together, whatever their place in the table.
+  Action del = counting("edit.delete", "Edit", close), ren = counting("edit.rename", "Edit", close);
+  Action top = counting("view.top", "View", frame);
+  del.context = ren.context = top.context = context_bit(ContextTarget::Face);
+  r.add(std::move(del));
+  r.add(std::move(top));
+  r.add(std::move(ren));
+  std::vector<std::string> ids;
+  for (const Action* a : r.for_context(ContextTarget::Face)) ids.push_back(a->id);
+  EXPECT_EQ(ids,
+            (std::vector<std::string>{"face.scheme.gb", "edit.delete", "edit.rename", "view.top"}));
   EXPECT_TRUE(r.conflicts().empty());
   r.add(counting("other.save", "Other", save, {*parse_chord("Ctrl+S")}));
   ASSERT_EQ(r.conflicts().size(), 1u);
   EXPECT_EQ(r.conflicts()[0], "Ctrl+S: file.save, other.save");
 }
 
-TEST(EditorActions, HelpListsEveryKeyThenTheMouse) {
+TEST(EditorActions, HelpListsEveryKeyThenTheMouseThenTheMenuOnlyCommands) {
   ActionRegistry r;
   Counter c;
   Action a = counting("view.frame", "View", c, {*parse_chord("F"), *parse_chord("Shift+F")});
   a.help = "frame all / selection";
   r.add(std::move(a));
-  r.add(counting("file.export", "File", c));  // no key: not in F1
+  r.add(counting("file.export", "File/Mesh", c));  // no key: listed by its menu place
+  r.add(counting("hidden", "", c));                // neither key nor menu: not a command
   Action nudge = counting("edit.nudge", "", c, {*parse_chord("Left")});
   nudge.keys_text = "Arrows";
   r.add(std::move(nudge));
   const auto rows = help_rows(r, {{"Wheel", "zoom"}});
-  ASSERT_EQ(rows.size(), 3u);
+  ASSERT_EQ(rows.size(), 4u);
   EXPECT_EQ(rows[0].keys, "F, Shift+F");
   EXPECT_EQ(rows[0].what, "frame all / selection");
   EXPECT_EQ(rows[1].keys, "Arrows");
   EXPECT_EQ(rows[1].what, "edit.nudge");
   EXPECT_EQ(rows[2].keys, "Wheel");
+  EXPECT_EQ(rows[3].keys, "File menu");
+  EXPECT_EQ(rows[3].what, "Mesh > file.export");
 }
 
 }  // namespace

@@ -7,6 +7,9 @@
 #include "app/editor/logic/select_tool.hpp"
 #include "app/editor/logic/view_navigator.hpp"
 #include "core/io/scene_io.hpp"
+#include "core/network/handle_planes.hpp"
+#include "core/network/network_filling.hpp"
+#include "core/network/tangent_planes.hpp"
 
 namespace pl {
 namespace {
@@ -25,7 +28,7 @@ struct ToolFixture : ::testing::Test {
   PickResult under;
 
   // The event at `pixel` with the pick there, as the editor builds it each frame.
-  PointerEvent at(const Vec2& pixel, bool shift = false, bool ctrl = false) {
+  PointerEvent at(const Vec2& pixel, bool shift = false, bool ctrl = false, bool alt = false) {
     under = picker.pick({live.draw().surfaces, items, live.draw().network_curves, &live.points()},
                         camera, kRect, pixel);
     PointerEvent e;
@@ -33,6 +36,7 @@ struct ToolFixture : ::testing::Test {
     e.rect = kRect;
     e.shift = shift;
     e.ctrl = ctrl;
+    e.alt = alt;
     e.under = &under;
     return e;
   }
@@ -142,6 +146,116 @@ TEST_F(ToolFixture, PressOnOneOfSeveralSelectedPointsDragsThemAllCancelRestores)
   EXPECT_FALSE(selection.contains(SelectionItem::of_point(PointRef::vertex(1))));
   tool.release(ctx, at(p0));
   EXPECT_FALSE(doc.can_undo());
+}
+
+// The end tangents at vertex v, and how far the most tilted one is off the plane of normal n
+// (degrees).
+double worst_off_plane_deg(const Network& n, int v, const Vec3& normal) {
+  double worst = 0;
+  for (int e : edges_at(n, v)) {
+    const Vec3 t = glm::normalize(end_tangent(n, e, v));
+    worst = std::max(worst, std::asin(std::min(1.0, std::abs(glm::dot(t, normal)))) * 180 / M_PI);
+  }
+  return worst;
+}
+
+TEST_F(ToolFixture, DraggingANormalKnobTurnsTheTangentPlaneAsOneStepWhateverThePauses) {
+  SelectTool tool;
+  auto now = Document::Clock::time_point();
+  doc.set_clock([&] { return now; });
+  const std::string before = scene_to_json(doc.scene());
+  selection.set({SelectionItem::of_point(PointRef::vertex(1))});
+  const std::vector<PlaneHandle> handles = plane_handles(doc.scene(), selection, camera, kRect, 1);
+  ASSERT_EQ(handles.size(), 1u);
+  const PlaneHandle h = handles[0];
+  EXPECT_FALSE(h.fixed);
+  // The disc is the plane the filling uses at the vertex, on the faces' side.
+  const Network& n0 = *doc.scene().network;
+  const TangentPlane filled = vertex_tangent_plane(n0, validate_network(n0, "t"), 1);
+  EXPECT_GT(glm::dot(h.normal, filled.normal), 1 - 1e-12);
+  const Vec2 knob = *project_to_window(camera, kRect, h.knob);
+  // As long as kNormalHandlePx pixels at the vertex's depth (shorter on screen when tilted).
+  EXPECT_NEAR(glm::length(h.knob - h.centre),
+              kNormalHandlePx * world_per_pixel(camera, kRect, h.centre), 1e-12);
+  EXPECT_EQ(pick_knob(handles, camera, kRect, knob + Vec2(5, -5), kKnobPickRadiusPx), 0);
+  EXPECT_EQ(pick_knob(handles, camera, kRect, knob + Vec2(9, -9), kKnobPickRadiusPx), -1);
+  ASSERT_TRUE(tool.press(ctx, at(knob)));
+  EXPECT_TRUE(tool.capturing());
+  EXPECT_TRUE(selection.contains(SelectionItem::of_point(PointRef::vertex(1))));
+  const Vec2 end = knob + Vec2(28, 16);
+  for (const Vec2& d : {Vec2(10, 5), Vec2(20, 10), end - knob}) {
+    now += std::chrono::seconds(3);  // pauses longer than the merge window
+    tool.drag(ctx, at(knob + d));
+  }
+  tool.release(ctx, at(end));
+  EXPECT_FALSE(tool.capturing());
+  const Network& n = *doc.scene().network;
+  ASSERT_TRUE(n.normals.size() == n.vertices.size() && n.normals[1]);
+  const Vec3 normal = *n.normals[1];
+  EXPECT_LT(glm::dot(normal, h.normal), 0.999);  // turned
+  // The normal points from the vertex towards the cursor on screen.
+  const Vec2 c = *project_to_window(camera, kRect, h.centre);
+  const Vec2 along = *project_to_window(camera, kRect, h.centre + 1e-4 * normal) - c;
+  const Vec2 to_cursor = end - c;
+  EXPECT_LT(std::abs(along.x * to_cursor.y - along.y * to_cursor.x),
+            1e-6 * glm::length(along) * glm::length(to_cursor));
+  EXPECT_GT(glm::dot(along, to_cursor), 0);
+  // The handles turned with the plane: no tangent is projected, the faces stay G1.
+  EXPECT_LT(worst_off_plane_deg(n, 1, normal), 1e-9);
+  const NetworkFilling f = fill_network(n, validate_network(n, "t"), std::nullopt, "t");
+  EXPECT_TRUE(f.projected_vertices.empty());
+  // One undo step, bit for bit.
+  ASSERT_TRUE(doc.undo());
+  EXPECT_EQ(scene_to_json(doc.scene()), before);
+  EXPECT_FALSE(doc.can_undo());
+  // Esc during a knob drag puts the plane back.
+  selection.adopt(doc.scene());
+  ASSERT_TRUE(tool.press(ctx, at(knob)));
+  tool.drag(ctx, at(knob + Vec2(-20, 0)));
+  EXPECT_NE(scene_to_json(doc.scene()), before);
+  tool.cancel(ctx);
+  EXPECT_EQ(scene_to_json(doc.scene()), before);
+  EXPECT_FALSE(tool.capturing());
+}
+
+TEST_F(ToolFixture, HandlesStayInTheirVertexPlaneUnlessAltIsHeld) {
+  SelectTool tool;
+  // Edge 0's handle at vertex 1, where three edges meet.
+  const PointRef h = PointRef::handle(0, 1);
+  const Vec3 start = point_position(doc.scene(), h);
+  const Network n0 = *doc.scene().network;
+  const Vec3 plane = *handle_plane_normal(n0, 1, std::vector<int>{0});
+  const Vec2 p0 = pixel_of(h);
+  const Vec2 p1 = p0 + Vec2(30, -25);
+  const Vec3 target = start + DragMotion{start, p0}.offset(camera, kRect, p1, {});
+  ASSERT_GT(std::abs(glm::dot(target - n0.vertices[1], plane)), 1e-3);  // off the plane
+  ASSERT_TRUE(tool.press(ctx, at(p0)));
+  tool.release(ctx, at(p1));
+  const Vec3 kept = point_position(doc.scene(), h);
+  EXPECT_NEAR(glm::dot(kept - n0.vertices[1], plane), 0, 1e-12);
+  EXPECT_LT(worst_off_plane_deg(*doc.scene().network, 1, plane), 1e-9);
+  ASSERT_TRUE(doc.undo());
+
+  // With Alt the handle goes where the cursor says and the plane turns with it.
+  selection.clear();
+  ASSERT_TRUE(tool.press(ctx, at(p0, false, false, true)));
+  tool.release(ctx, at(p1, false, false, true));
+  const Network free = *doc.scene().network;
+  EXPECT_EQ(point_position(doc.scene(), h), target);
+  const Vec3 turned = *handle_plane_normal(free, 1);
+  EXPECT_LT(worst_off_plane_deg(free, 1, turned), 1e-9);
+  EXPECT_GT(std::abs(glm::dot(turned, plane)), 0.5);  // turned, not flipped
+  EXPECT_LT(std::abs(glm::dot(turned, plane)), 1 - 1e-6);
+  ASSERT_TRUE(doc.undo());
+
+  // Alt pressed during a drag: it goes on freely from the drag's start.
+  ASSERT_TRUE(tool.press(ctx, at(p0)));
+  tool.drag(ctx, at(p0 + Vec2(10, -5)));
+  tool.drag(ctx, at(p1, false, false, true));
+  tool.release(ctx, at(p1, false, false, true));
+  EXPECT_EQ(*doc.scene().network, free);
+  ASSERT_TRUE(doc.undo());
+  EXPECT_FALSE(doc.can_undo());  // one step
 }
 
 TEST_F(ToolFixture, ToolBoxCancelsTheToolItLeaves) {

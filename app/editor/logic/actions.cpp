@@ -166,6 +166,15 @@ std::vector<const Action*> ActionRegistry::for_context(ContextTarget target) con
   std::vector<const Action*> r;
   for (const Action& a : actions_)
     if (a.context & context_bit(target)) r.push_back(&a);
+  // Tables add actions by feature, so one menu's may be apart ("Edit/Delete" with the authoring
+  // actions, "Edit/Rename" later): the menu shows each menu's once, as one group.
+  std::vector<std::string> order;
+  for (const Action* a : r)
+    if (std::find(order.begin(), order.end(), a->menu) == order.end()) order.push_back(a->menu);
+  std::stable_sort(r.begin(), r.end(), [&](const Action* x, const Action* y) {
+    return std::find(order.begin(), order.end(), x->menu) <
+           std::find(order.begin(), order.end(), y->menu);
+  });
   return r;
 }
 
@@ -189,15 +198,29 @@ std::vector<std::string> ActionRegistry::conflicts() const {
 }
 
 std::vector<HelpRow> help_rows(const ActionRegistry& actions, const std::vector<HelpRow>& mouse) {
-  std::vector<HelpRow> rows;
+  std::vector<HelpRow> rows, menu_only;
   for (const Action& a : actions.all()) {
-    if (a.keys.empty() && a.keys_text.empty()) continue;
+    const std::string what = a.help.empty() ? a.label : a.help;
+    if (a.keys.empty() && a.keys_text.empty()) {
+      // Reached from a menu only: the menu instead of a key, the place in it before the help
+      // ("View menu", "Work Plane > XY Plane: ...").
+      if (a.menu.empty()) continue;
+      const std::size_t slash = a.menu.find('/');
+      std::string place =
+          slash == std::string::npos ? std::string() : a.menu.substr(slash + 1) + "/";
+      for (std::size_t i = 0; (i = place.find('/', i)) != std::string::npos; i += 3)
+        place.replace(i, 1, " > ");
+      menu_only.push_back({a.menu.substr(0, slash) + " menu",
+                           place + a.label + (a.help.empty() ? "" : ": " + a.help)});
+      continue;
+    }
     std::string keys = a.keys_text;
     if (keys.empty())
       for (const KeyChord& k : a.keys) keys += (keys.empty() ? "" : ", ") + to_string(k);
-    rows.push_back({keys, a.help.empty() ? a.label : a.help});
+    rows.push_back({keys, what});
   }
   rows.insert(rows.end(), mouse.begin(), mouse.end());
+  rows.insert(rows.end(), menu_only.begin(), menu_only.end());
   return rows;
 }
 

@@ -146,7 +146,8 @@ class ActionRegistry {
     std::string submenu;  // full path of the sub-menu when action is null
   };
   std::vector<Entry> entries(const std::string& menu) const;
-  // The actions offered on a right-click on `target`, in table order.
+  // The actions offered on a right-click on `target`: the actions of one menu together (the
+  // menus in the order their first offered action comes in the table), each menu's in table order.
   std::vector<const Action*> for_context(ContextTarget target) const;
 
   // Every key given to more than one action, as "Ctrl+S: file.save, other.id".
@@ -157,7 +158,8 @@ class ActionRegistry {
 };
 
 // The F1 table: one row per action with keys (its keys text and its help, or label), then the
-// mouse rows given, in that order.
+// mouse rows given, then the actions reached from a menu only ("Network menu", "Tangent Plane >
+// Fixed: " and their help), in that order: every command is listed.
 struct HelpRow {
   std::string keys, what;
 };

@@ -102,6 +102,99 @@ bool Selection::prune(const Scene& scene) {
   return true;
 }
 
+namespace {
+
+// Whether the shorter of a and b is the start of the longer: every element they share keeps its
+// index.
+template <class T>
+bool one_extends_the_other(const std::vector<T>& a, const std::vector<T>& b) {
+  const std::size_t n = std::min(a.size(), b.size());
+  return std::equal(a.begin(), a.begin() + n, b.begin());
+}
+
+// The new index of `i` after removing the sorted indices `gone`, or -1 when i is one of them.
+int renumbered(int i, const std::vector<int>& gone) {
+  const auto at = std::lower_bound(gone.begin(), gone.end(), i);
+  if (at != gone.end() && *at == i) return -1;
+  return i - int(at - gone.begin());
+}
+
+}  // namespace
+
+Selection::Structure Selection::structure_of(const Scene& scene) {
+  Structure s;
+  if (!scene.network) return s;
+  const Network& net = *scene.network;
+  s.vertices = net.vertices;
+  for (const NetworkEdge& e : net.edges) s.edges.push_back(e.v);
+  for (const NetworkFace& f : net.faces) s.faces.push_back(f.loop);
+  return s;
+}
+
+Selection::Followed Selection::follow(const Scene& scene) {
+  static const Network kNone;
+  const Network& net = scene.network ? *scene.network : kNone;
+  Structure& was = structure_;
+  // The common case (a move, a drag frame): the same structure, compared in place.
+  bool same = was.vertices.size() == net.vertices.size() && was.edges.size() == net.edges.size() &&
+              was.faces.size() == net.faces.size();
+  for (std::size_t e = 0; same && e < net.edges.size(); ++e) same = net.edges[e].v == was.edges[e];
+  for (std::size_t f = 0; same && f < net.faces.size(); ++f)
+    same = net.faces[f].loop == was.faces[f];
+  if (same) {
+    was.vertices = net.vertices;  // moved vertices: what a later count change is compared with
+    return prune(scene) ? Followed::Pruned : Followed::Kept;
+  }
+  Structure now = structure_of(scene);
+  ++structure_serial_;
+  const bool compatible = one_extends_the_other(was.vertices, now.vertices) &&
+                          one_extends_the_other(was.edges, now.edges) &&
+                          one_extends_the_other(was.faces, now.faces);
+  structure_ = std::move(now);
+  if (compatible) return prune(scene) ? Followed::Pruned : Followed::Kept;
+  if (!items_.empty()) {
+    items_.clear();
+    changed();
+  }
+  return Followed::Cleared;
+}
+
+void Selection::adopt(const Scene& scene) {
+  structure_ = structure_of(scene);
+  ++structure_serial_;
+  prune(scene);
+}
+
+void Selection::remap(const Removed& removed) {
+  std::vector<SelectionItem> kept;
+  for (SelectionItem i : items_) {
+    int* index = nullptr;
+    const std::vector<int>* gone = nullptr;
+    if (i.kind == SelectionItem::Kind::Point && i.point.kind == PointRef::Kind::NetworkVertex) {
+      index = &i.point.index;
+      gone = &removed.vertices;
+    } else if (i.kind == SelectionItem::Kind::Point && i.point.kind == PointRef::Kind::EdgeHandle) {
+      index = &i.point.object;
+      gone = &removed.edges;
+    } else if (i.kind == SelectionItem::Kind::Edge) {
+      index = &i.index;
+      gone = &removed.edges;
+    } else if (i.kind == SelectionItem::Kind::Face) {
+      index = &i.index;
+      gone = &removed.faces;
+    }
+    if (index) {
+      *index = renumbered(*index, *gone);
+      if (*index < 0) continue;
+    }
+    kept.push_back(i);
+  }
+  if (kept != items_) {
+    items_ = std::move(kept);
+    changed();
+  }
+}
+
 std::vector<PointRef> Selection::points() const {
   std::vector<PointRef> r;
   for (const SelectionItem& i : items_)

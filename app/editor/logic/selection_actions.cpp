@@ -3,28 +3,15 @@
 #include <algorithm>
 
 #include "app/document/network_commands.hpp"
+#include "app/editor/logic/command_sequence.hpp"
 #include "app/editor/logic/selection_properties.hpp"
+#include "app/editor/logic/tool.hpp"
 
 namespace pl {
 
 namespace {
 
 using Kind = SelectionItem::Kind;
-
-// Several commands as one undo step (one scheme change for every selected face).
-class CommandSequence final : public Command {
- public:
-  CommandSequence(std::string label, std::vector<std::unique_ptr<Command>> commands)
-      : label_(std::move(label)), commands_(std::move(commands)) {}
-  void apply(Scene& scene) override {
-    for (const auto& c : commands_) c->apply(scene);
-  }
-  std::string label() const override { return label_; }
-
- private:
-  std::string label_;
-  std::vector<std::unique_ptr<Command>> commands_;
-};
 
 std::vector<int> existing(const Scene& scene, const Selection& selection, Kind kind) {
   std::vector<int> r;
@@ -37,7 +24,7 @@ std::vector<int> existing(const Scene& scene, const Selection& selection, Kind k
   return r;
 }
 
-void add_scheme_action(ActionRegistry& actions, Document& doc, Selection& selection,
+void add_scheme_action(ActionRegistry& actions, Document& doc, Selection& selection, const Say& say,
                        FaceScheme scheme, const std::string& help) {
   const std::string name = scheme_name(scheme);
   std::string id = "face.scheme." + name;
@@ -58,7 +45,7 @@ void add_scheme_action(ActionRegistry& actions, Document& doc, Selection& select
       return doc.scene().network->faces[f].scheme == scheme;
     });
   };
-  a.run = [&doc, &selection, scheme, name](const std::optional<KeyChord>&) {
+  a.run = [&doc, &selection, say, scheme, name](const std::optional<KeyChord>&) {
     std::vector<std::unique_ptr<Command>> changes;
     std::string faces;
     for (int f : existing(doc.scene(), selection, Kind::Face))
@@ -67,18 +54,16 @@ void add_scheme_action(ActionRegistry& actions, Document& doc, Selection& select
         faces += (faces.empty() ? "" : ", ") + std::to_string(f);
       }
     if (changes.empty()) return;  // nothing would change: no undo step
-    if (changes.size() == 1)
-      doc.execute(std::move(changes[0]));
-    else
-      doc.execute(std::make_unique<CommandSequence>("set scheme " + name + " on faces " + faces,
-                                                    std::move(changes)));
+    run_command(doc, say,
+                as_one_step("set scheme " + name + " on faces " + faces, std::move(changes)));
   };
   actions.add(std::move(a));
 }
 
 }  // namespace
 
-void add_selection_actions(ActionRegistry& actions, Document& doc, Selection& selection) {
+void add_selection_actions(ActionRegistry& actions, Document& doc, Selection& selection,
+                           const Say& say) {
   auto has = [&doc, &selection](Kind kind) {
     return [&doc, &selection, kind] {
       for (const SelectionItem& i : selection.items())
@@ -149,11 +134,11 @@ void add_selection_actions(ActionRegistry& actions, Document& doc, Selection& se
                        return items;
                      }));
 
-  add_scheme_action(actions, doc, selection, FaceScheme::Auto,
+  add_scheme_action(actions, doc, selection, say, FaceScheme::Auto,
                     "fill the selected faces by their side count (Gregory for 3 and 4 sides)");
-  add_scheme_action(actions, doc, selection, FaceScheme::Gregory,
+  add_scheme_action(actions, doc, selection, say, FaceScheme::Gregory,
                     "fill the selected faces with Gregory patches");
-  add_scheme_action(actions, doc, selection, FaceScheme::GB,
+  add_scheme_action(actions, doc, selection, say, FaceScheme::GB,
                     "fill the selected faces with Generalized Bezier patches");
 }
 

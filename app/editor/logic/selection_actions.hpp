@@ -10,7 +10,11 @@
 
 namespace pl {
 
+// A line for the status bar: what an action did, or why it was refused.
+using Say = std::function<void(const std::string&)>;
+
 // `doc` and `selection` must outlive the registry's use of the actions.
-void add_selection_actions(ActionRegistry& actions, Document& doc, Selection& selection);
+void add_selection_actions(ActionRegistry& actions, Document& doc, Selection& selection,
+                           const Say& say = {});
 
 }  // namespace pl

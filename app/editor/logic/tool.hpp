@@ -1,8 +1,10 @@
 // The active tool: what a left press in the view does. The select tool picks and drags; the
-// authoring tools (add a vertex on the work plane, add an edge, make a face, ...) are further
-// Tool classes, added to the ToolBox with one line and given an action (menu entry and key).
-// A tool sees the mouse as PointerEvents, what lies under the cursor (the picker's result) and
-// acts on the document through commands, so every tool is GUI-free and unit-tested.
+// authoring tools (add a vertex on the work plane, add an edge, make a face, split an edge) are
+// further Tool classes, added to the ToolBox with one line and given an action (menu entry and
+// key). A tool sees the mouse as PointerEvents, what lies under the cursor (the picker's result)
+// and acts on the document through commands; what it shows while it works (the rubber band, the
+// point a click would add) is a ToolPreview the editor draws. Every tool is GUI-free and
+// unit-tested.
 #pragma once
 
 #include <functional>
@@ -12,6 +14,7 @@
 #include <vector>
 
 #include "app/document/document.hpp"
+#include "app/document/network_commands.hpp"
 #include "app/editor/logic/scene_picker.hpp"
 #include "app/editor/logic/selection.hpp"
 #include "app/editor/logic/work_plane.hpp"
@@ -26,6 +29,27 @@ struct ToolContext {
   const WorkPlane& work_plane;
   // A line for the status bar ("split edge 3: face 1 is now a pentagon").
   std::function<void(const std::string&)> say = [](const std::string&) {};
+  double ui_scale = 1;  // on-screen handles are this many times their nominal pixel size
+};
+
+// Runs a command for a tool or an action. The status line gets the command's label, or the
+// reason it was refused (EditRefused: the document is unchanged). The caller keeps its pointer,
+// so it can read what the command did (the faces a split changed, what a delete removed).
+// Returns whether it ran.
+bool run_command(Document& doc, const std::function<void(const std::string&)>& say,
+                 std::shared_ptr<Command> command);
+bool run_command(ToolContext& ctx, std::shared_ptr<Command> command);
+
+// What a tool shows over the view while it works, in world coordinates (the editor projects and
+// draws it): what has been picked (its points marked, its lines solid), what a click or Enter
+// would add (dashed: the rubber band to the cursor, the edge closing a face) and the point a
+// click acts on.
+struct ToolPreview {
+  std::vector<Vec3> picked;                  // marked points (the vertices picked so far)
+  std::vector<std::vector<Vec3>> lines;      // solid polylines (picked edges, the chain so far)
+  std::vector<std::array<Vec3, 2>> pending;  // dashed segments
+  std::optional<Vec3> target;                // where a click acts now
+  bool empty() const { return picked.empty() && lines.empty() && pending.empty() && !target; }
 };
 
 // One mouse position in a view panel with the modifier keys held.
@@ -57,10 +81,27 @@ class Tool {
   virtual void drag(ToolContext&, const PointerEvent&) {}
   virtual void release(ToolContext&, const PointerEvent&) {}
   virtual void click(ToolContext&, const PointerEvent&) {}
-  // Esc, an undo or a new document while the tool holds the mouse: drop what is under way.
+  // The cursor over a view with no button held (what preview() shows follows it).
+  virtual void hover(ToolContext&, const PointerEvent&) {}
+  // The cursor left the views.
+  virtual void leave() {}
+  // Esc, an undo that renumbered the network or a new document: drop what is under way.
   virtual void cancel(ToolContext&) {}
+  // Holds the mouse or has picked something a further click or Enter will use (Esc cancels it).
   virtual bool capturing() const { return false; }
+  // Enter: completes what has been picked (a face's loop). can_finish() says whether it would.
+  virtual bool can_finish(const ToolContext&) const { return false; }
+  virtual void finish(ToolContext&) {}
+  virtual ToolPreview preview(const ToolContext&) const { return {}; }
+  // Clicks put points on the work plane: the editor shows its grid while the tool is chosen.
+  virtual bool places_on_work_plane() const { return false; }
 };
+
+// Where a click at `e` puts a new point: on the surface under the cursor, else where the
+// cursor's ray meets the work plane (nullopt when it does not, in front of the eye).
+std::optional<Vec3> placement(const ToolContext& ctx, const PointerEvent& e);
+// The network vertex under the cursor at `e`, or -1.
+int vertex_under(const PointerEvent& e);
 
 class ToolBox {
  public:

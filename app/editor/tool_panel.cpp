@@ -1,0 +1,52 @@
+// The active tool's fields in the side panel, below the tool buttons: typed coordinates for a
+// new vertex, the chain a face is being made of with its Finish button. ImGui code; what the
+// fields do is the tools'.
+#include <imgui.h>
+
+#include <cmath>
+
+#include "app/editor/logic/add_edge_tool.hpp"
+#include "app/editor/logic/add_vertex_tool.hpp"
+#include "app/editor/logic/make_face_tool.hpp"
+#include "app/editor/side_panel.hpp"
+
+namespace pl {
+
+namespace {
+
+std::string list(const std::vector<int>& xs) {
+  std::string s;
+  for (int x : xs) s += (s.empty() ? "" : ", ") + std::to_string(x);
+  return s;
+}
+
+void vertex_options(AddVertexTool& tool, ToolContext& ctx) {
+  // Starts at the work plane's origin: where a typed vertex most often goes.
+  static double xyz[3] = {0, 0, 0};
+  const char* add = "Add vertex";
+  ImGui::SetNextItemWidth(-(ImGui::CalcTextSize(add).x + 2 * ImGui::GetStyle().FramePadding.x +
+                            ImGui::GetStyle().ItemSpacing.x));
+  ImGui::InputScalarN("##new_vertex", ImGuiDataType_Double, xyz, 3, nullptr, nullptr, "%.6g");
+  ImGui::SameLine();
+  if (ImGui::Button(add)) tool.add_at(ctx, Vec3(xyz[0], xyz[1], xyz[2]));
+}
+
+}  // namespace
+
+void draw_tool_options(const SidePanel& p) {
+  if (!p.tool_context) return;
+  ToolContext& ctx = *p.tool_context;
+  Tool& tool = p.tools.active();
+  if (auto* t = dynamic_cast<AddVertexTool*>(&tool)) vertex_options(*t, ctx);
+  if (auto* t = dynamic_cast<AddEdgeTool*>(&tool); t && t->from() >= 0)
+    ImGui::Text("next edge from vertex %d", t->from());
+  if (auto* t = dynamic_cast<MakeFaceTool*>(&tool)) {
+    if (!t->vertices().empty()) ImGui::TextWrapped("vertices %s", list(t->vertices()).c_str());
+    if (!t->edges().empty()) ImGui::TextWrapped("edges %s", list(t->edges()).c_str());
+    ImGui::BeginDisabled(!t->can_finish(ctx));
+    if (ImGui::Button("Make face  (Enter)")) t->finish(ctx);
+    ImGui::EndDisabled();
+  }
+}
+
+}  // namespace pl
