@@ -13,6 +13,7 @@
 #include "core/io/scene_io.hpp"
 #include "core/network/face_ribbons.hpp"
 #include "core/network/gb_face.hpp"
+#include "core/network/incremental_filling.hpp"
 #include "core/patch/gb/default_net.hpp"
 #include "core/patch/gb/gb_centred_ribbon_patch.hpp"
 #include "network_test_util.hpp"
@@ -344,6 +345,23 @@ TEST(GBFaceInterior, BadInteriorKeysAreLocatedErrors) {
   expect(R"(, "offsets": [{"at": "center"}])", "network.faces[0].offsets[0]", "by");
   expect(R"(, "offsets": [{"at": "center", "by": [0,0,0], "x": 1}])", "network.faces[0].offsets[0]",
          "x");
+}
+
+// The engine follows interior edits: an offset changes one face's fill data, so exactly that face
+// is refilled, and its patch is the from-scratch filling's.
+TEST(GBFaceInterior, IncrementalFillingRefillsOnlyTheEditedFace) {
+  Network n = load_network("gb-hole-filling.json");
+  n.faces[0].degree = 6;
+  IncrementalFilling filling(std::nullopt, "t.json");
+  filling.update(n);
+  n.faces[0].offsets.push_back({.side = 2, .j = 3, .layer = 2, .by = {0, 0, 0.2}});
+  const FillingUpdate up = filling.update(n);
+  ASSERT_EQ(up.refilled.size(), 1u);
+  EXPECT_EQ(up.refilled[0].face, 0);
+  const NetworkFilling scratch = fill_network(n, validate_network(n, "t"), std::nullopt, "t");
+  const Patch &a = *up.refilled[0].patch, &b = *scratch.faces[0].patch;
+  ASSERT_EQ(a.control_points(), b.control_points());
+  for (const Vec2& x : domain_samples(a)) EXPECT_EQ(a.evaluate(x).p, b.evaluate(x).p);
 }
 
 }  // namespace
