@@ -27,6 +27,8 @@ Box DrawScene::bounds() const {
   }
   for (const Polyline& l : network_curves)
     for (const Vec3& p : l) b.add(p);
+  for (const Polyline& l : free_curves)
+    for (const Vec3& p : l) b.add(p);
   return b;
 }
 

@@ -64,6 +64,9 @@ struct DrawScene {
   // Per border comb: true for a side of a network face, whose comb is its edge's. With both
   // overlays on, only the network's is drawn (twice would double the alpha and the cost).
   std::vector<bool> border_on_network;
+  // Free curves of the scene (always drawn) and their combs (drawn with the `combs` overlay).
+  std::vector<Polyline> free_curves;
+  std::vector<CurvatureComb> free_curve_combs;
   // Drawn on top of everything in palette::kHighlight (e.g. the edge a panel points at).
   std::vector<Polyline> highlights;
 

@@ -180,10 +180,11 @@ void GpuPrimitives::draw(GLenum mode, GLsizei count) const {
 void GpuScene::update(const DrawScene& scene) {
   update_geometry(scene);
   borders_.set(polylines(scene.borders), {});
-  std::vector<const CurvatureComb*> network, borders;
+  std::vector<const CurvatureComb*> network, borders, free;
   for (const CurvatureComb& c : scene.network_combs) network.push_back(&c);
   for (const CurvatureComb& c : scene.border_combs) borders.push_back(&c);
-  set_combs(network, borders, scene.border_on_network);
+  for (const CurvatureComb& c : scene.free_curve_combs) free.push_back(&c);
+  set_combs(network, borders, scene.border_on_network, free);
 }
 
 void GpuScene::update_geometry(const DrawScene& scene) {
@@ -232,6 +233,7 @@ void GpuScene::update_geometry(const DrawScene& scene) {
   arrow_kinds_ = arrow_kind_bits(scene.arrows);
   set_highlights(scene.highlights);
   curves_.set(polylines(scene.network_curves), {});
+  free_curves_.set(polylines(scene.free_curves), {});
   const Box box = scene.bounds();
   diagonal_ = box.empty() ? 0.0 : glm::length(box.hi - box.lo);
 }
@@ -251,7 +253,8 @@ void GpuScene::update_curves(std::span<const CurvatureComb* const> network_combs
 
 void GpuScene::set_combs(std::span<const CurvatureComb* const> network_combs,
                          std::span<const CurvatureComb* const> borders,
-                         const std::vector<bool>& border_on_network) {
+                         const std::vector<bool>& border_on_network,
+                         std::span<const CurvatureComb* const> free_combs) {
   // The border combs that are not network edges' first, so that they can be drawn alone.
   std::vector<const CurvatureComb*> ordered;
   ordered.reserve(borders.size());
@@ -265,12 +268,14 @@ void GpuScene::set_combs(std::span<const CurvatureComb* const> network_combs,
     own += !(i < border_on_network.size() && border_on_network[i]);
   std::vector<const CurvatureComb*> all(network_combs.begin(), network_combs.end());
   all.insert(all.end(), borders.begin(), borders.end());
+  all.insert(all.end(), free_combs.begin(), free_combs.end());
   comb_scale_ = automatic_comb_scale_of(all, diagonal_);
   comb_reference_length_ = kDefaultCombFraction * diagonal_;
   const double max_tooth =
       comb_scale_ > 0 ? kCombToothClamp * comb_reference_length_ / comb_scale_ : 0.0;
   network_combs_.set(network_combs, network_combs.size(), max_tooth);
   border_combs_.set(ordered, own, max_tooth);
+  free_combs_.set(free_combs, free_combs.size(), max_tooth);
 }
 
 }  // namespace pl

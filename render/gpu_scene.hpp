@@ -105,6 +105,9 @@ class GpuScene {
   const GpuPrimitives& network_curves() const { return curves_; }
   const GpuPrimitives& borders() const { return borders_; }
   const GpuCombs& network_combs() const { return network_combs_; }
+  // The scene's free curves and their combs.
+  const GpuPrimitives& free_curves() const { return free_curves_; }
+  const GpuCombs& free_curve_combs() const { return free_combs_; }
   // Every border comb; those that are not also network edges' (DrawScene::border_on_network)
   // are its first own_teeth / own_envelope vertices.
   const GpuCombs& border_combs() const { return border_combs_; }
@@ -117,12 +120,13 @@ class GpuScene {
  private:
   void set_combs(std::span<const CurvatureComb* const> network_combs,
                  std::span<const CurvatureComb* const> borders,
-                 const std::vector<bool>& border_on_network);
+                 const std::vector<bool>& border_on_network,
+                 std::span<const CurvatureComb* const> free_combs = {});
   std::vector<GpuSurface> surfaces_;
   GpuPrimitives net_lines_, derived_net_lines_, net_points_, arrows_, curves_, borders_,
-      highlights_;
+      highlights_, free_curves_;
   uint32_t point_styles_ = 0, arrow_kinds_ = 0;
-  GpuCombs network_combs_, border_combs_;
+  GpuCombs network_combs_, border_combs_, free_combs_;
   double diagonal_ = 0, comb_scale_ = 0, comb_reference_length_ = 0;
 };
 

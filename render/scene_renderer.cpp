@@ -107,6 +107,8 @@ void SceneRenderer::draw(const GpuScene& scene, const Camera& camera,
   if (borders) draw_lines(scene.borders(), vp, v, palette::kBorder, 0.85f, 1.4f * s, true);
   if (network)
     draw_lines(scene.network_curves(), vp, v, palette::kNetworkCurve, 1.0f, 2.6f * s, true);
+  // Free curves are objects of their own: always shown.
+  draw_lines(scene.free_curves(), vp, v, palette::kNetworkCurve, 1.0f, 2.6f * s, true);
   if (settings.combs) {
     const double per_curvature =
         settings.comb_length.value_or(scene.comb_scale()) * settings.comb_scale;
@@ -114,6 +116,7 @@ void SceneRenderer::draw(const GpuScene& scene, const Camera& camera,
     // A network face's border comb is its edge's: drawn once, with the network's.
     if (borders) draw_combs(scene.border_combs(), network, vp, v, float(per_curvature), float(cap));
     if (network) draw_combs(scene.network_combs(), false, vp, v, float(per_curvature), float(cap));
+    draw_combs(scene.free_curve_combs(), false, vp, v, float(per_curvature), float(cap));
   }
   if (settings.control_net) draw_net(scene, camera, vp, v);
   // Highlights last: what the user is pointed at is never under another overlay.

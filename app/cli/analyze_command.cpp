@@ -21,7 +21,9 @@ int run_analyze(std::span<const std::string> args, std::ostream& out, std::ostre
   const SceneSurfaces surfaces = evaluate_scene(scene, density, scheme, cache, file);
   // The report's figures are finite only if every sample is.
   for (const SceneSurface& s : surfaces.surfaces) check_finite(*s.evaluator, s.name, file);
-  const SceneReport report = analyze_scene(scene, surfaces);
+  for (std::size_t i = 0; i < scene.curves.size(); ++i)
+    check_curve_finite(scene.curves[i], i, density, file);
+  const SceneReport report = analyze_scene(scene, surfaces, density);
   out << (a.flag("--json") ? report_to_json(report) : report_to_text(report));
   return kExitOk;
 }

@@ -1,5 +1,6 @@
 #include "app/cli/draw_scene_builder.hpp"
 
+#include <algorithm>
 #include <map>
 
 #include "core/patch/control_net_topology.hpp"
@@ -80,8 +81,51 @@ std::vector<CurvatureComb> surface_borders(const SceneSurface& surface, int comb
   return borders;
 }
 
+Polyline free_curve_polyline(const SceneCurve& c) {
+  const auto spans = curve_spans(c);
+  const int per_span = std::max(8, kCurveSegments / static_cast<int>(spans.size()));
+  Polyline l;
+  for (double t : curve_sample_parameters(c, per_span)) l.push_back(evaluate(c, t).p);
+  return l;
+}
+
+std::vector<CurvatureComb> free_curve_combs(const SceneCurve& c, int comb_teeth) {
+  std::vector<CurvatureComb> combs;
+  for (const auto& [a, b] : curve_spans(c)) {
+    const double len = b - a;
+    combs.push_back(curvature_comb(
+        [&, a = a](double u) {
+          CurvePoint p = evaluate(c, a + len * u);
+          p.d1 *= len, p.d2 *= len * len;  // derivatives in u (the comb needs their direction)
+          return p;
+        },
+        comb_teeth));
+  }
+  return combs;
+}
+
+void append_free_curve(DrawScene& d, const SceneCurve& c, int comb_teeth) {
+  d.free_curves.push_back(free_curve_polyline(c));
+  if (comb_teeth > 0)
+    for (CurvatureComb& comb : free_curve_combs(c, comb_teeth))
+      d.free_curve_combs.push_back(std::move(comb));
+  // The control polygon; a Hermite curve's tangents as arrows to its equivalent Bézier handles.
+  uint32_t previous = 0;
+  for (std::size_t i = 0; i < c.points.size(); ++i) {
+    const uint32_t id =
+        add_point(d.net, c.points[i], ControlPointKind::Boundary, PointRole::Editable);
+    if (i > 0 && c.type != CurveType::Hermite) d.net.segments.push_back({previous, id});
+    previous = id;
+  }
+  if (c.type == CurveType::Hermite) {
+    d.arrows.push_back({c.points[0], c.points[0] + c.tangents[0] / 3.0, ArrowKind::Tangent});
+    d.arrows.push_back({c.points[1], c.points[1] - c.tangents[1] / 3.0, ArrowKind::Tangent});
+  }
+}
+
 DrawScene build_draw_scene(const Scene& scene, const SceneSurfaces& surfaces, int comb_teeth) {
   DrawScene d;
+  for (const SceneCurve& c : scene.curves) append_free_curve(d, c, comb_teeth);
   for (const SceneSurface& s : surfaces.surfaces) {
     d.surfaces.push_back(make_surface_mesh(*s.evaluator, s.name));
     for (CurvatureComb& c : surface_borders(s, comb_teeth)) {

@@ -40,6 +40,13 @@ Polyline curve_polyline(const BezierCurve& curve, int segments);
 // Every network edge's curvature comb (comb_teeth >= 1).
 std::vector<CurvatureComb> network_combs(const Network& network, int comb_teeth);
 
+// A free curve as drawn: every span sampled uniformly (at least kCurveSegments segments in all),
+// and its curvature comb, one comb per span (comb_teeth tooth intervals each).
+Polyline free_curve_polyline(const SceneCurve& curve);
+std::vector<CurvatureComb> free_curve_combs(const SceneCurve& curve, int comb_teeth);
+// The curve, its comb (comb_teeth > 0) and its control polygon appended to d.
+void append_free_curve(DrawScene& d, const SceneCurve& curve, int comb_teeth);
+
 // One per domain side of the surface, from the surface jet along the side (exact for every patch
 // type; boundary_curves() only approximates some types' sides): the points are the border drawn,
 // the teeth its comb. comb_teeth 0: the points alone (kCurveSegments segments), no teeth.

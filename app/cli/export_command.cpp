@@ -6,10 +6,12 @@
 #include "app/cli/commands.hpp"
 #include "app/cli/load_input.hpp"
 #include "app/cli/work_limits.hpp"
+#include "core/analysis/curve_analysis.hpp"
 #include "core/cad/cad_export.hpp"
 #include "core/eval/scene_surfaces.hpp"
 #include "core/io/input_limits.hpp"
 #include "core/mesh/mesh_export.hpp"
+#include "core/mesh/polyline.hpp"
 
 namespace pl {
 
@@ -55,8 +57,16 @@ int run_export(std::span<const std::string> args, std::ostream& out, std::ostrea
   std::vector<SurfaceMesh> meshes;
   for (const SceneSurface& s : surfaces.surfaces)
     meshes.push_back(make_surface_mesh(*s.evaluator, s.name));
-  export_meshes(meshes, *target, file);
-  out << "wrote " << meshes.size() << " patch(es) to " << *target << "\n";
+  for (std::size_t i = 0; i < scene.curves.size(); ++i)
+    check_curve_finite(scene.curves[i], i, density, file);
+  std::vector<CurvePolyline> polylines;
+  if (mesh_format_for(*target) == MeshFormat::Obj)
+    for (std::size_t i = 0; i < scene.curves.size(); ++i)
+      polylines.push_back(curve_polyline(scene.curves[i], curve_name(scene.curves[i], i), density));
+  export_meshes(meshes, *target, file, polylines);
+  out << "wrote " << meshes.size() << " patch(es)";
+  if (!polylines.empty()) out << " and " << polylines.size() << " curve(s)";
+  out << " to " << *target << "\n";
   return kExitOk;
 }
 

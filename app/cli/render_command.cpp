@@ -10,8 +10,9 @@
 #include "app/cli/draw_scene_builder.hpp"
 #include "app/cli/load_input.hpp"
 #include "app/cli/work_limits.hpp"
-#include "core/io/atomic_file.hpp"
+#include "core/analysis/curve_analysis.hpp"
 #include "core/base/data_error.hpp"
+#include "core/io/atomic_file.hpp"
 #include "core/io/input_limits.hpp"
 #include "core/mesh/finite_check.hpp"
 #include "render/default_view.hpp"
@@ -102,6 +103,8 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
   check_work_limits(scene, density, file);
   if (compare && !scene.network)
     throw DataError(file, "", "--compare needs a scene with a curve network");
+  for (std::size_t i = 0; i < scene.curves.size(); ++i)
+    check_curve_finite(scene.curves[i], i, density, file);
   TessellationCache cache;
   // No comb work unless combs are drawn.
   const int teeth = settings.combs ? settings.comb_teeth : 0;

@@ -38,6 +38,8 @@ std::size_t estimated_samples(const Scene& scene, int density) {
     }
     total += samples_per_square(sp.patch->domain().side_count()) * square;
   }
+  for (const SceneCurve& c : scene.curves)  // a curve is cheap: samples per span
+    total += double(curve_spans(c).size()) * (density + 1.0);
   return total > 1e18 ? std::size_t(1e18) : static_cast<std::size_t>(total);
 }
 

@@ -99,8 +99,11 @@ double angle_deg(const Vec3& a, const Vec3& b) {
   return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)) * 180.0 / M_PI;
 }
 
-SceneReport analyze_scene(const Scene& scene, const SceneSurfaces& ss) {
+SceneReport analyze_scene(const Scene& scene, const SceneSurfaces& ss, int curve_samples) {
   SceneReport r;
+  for (std::size_t i = 0; i < scene.curves.size(); ++i)
+    r.curves.push_back(analyze_curve(scene.curves[i], curve_name(scene.curves[i], i), curve_samples));
+  r.joints = curve_joints(scene.curves);
   for (const SceneSurface& s : ss.surfaces) r.patches.push_back(analyze_surface(scene, s));
   for (const SharedEdge& e : ss.shared_edges) r.edges.push_back(analyze_edge(ss, e));
   for (const ProjectedVertex& v : ss.projected_vertices)
@@ -136,6 +139,23 @@ std::string report_to_json(const SceneReport& r) {
   for (const VertexReport& v : r.vertices)
     j["vertices"].push_back(
         {{"vertex", v.vertex}, {"tangent_plane_deviation_deg", v.tangent_plane_deviation_deg}});
+  j["curves"] = nlohmann::json::array();
+  for (const CurveReport& c : r.curves)
+    j["curves"].push_back({{"name", c.name},
+                           {"type", c.type},
+                           {"degree", c.degree},
+                           {"control_points", c.control_points},
+                           {"spans", c.spans},
+                           {"length", c.length},
+                           {"curvature", {c.curvature[0], c.curvature[1]}},
+                           {"inflections", c.inflections},
+                           {"nonfinite_samples", c.nonfinite_samples}});
+  j["joints"] = nlohmann::json::array();
+  for (const JointReport& k : r.joints)
+    j["joints"].push_back({{"curves", {k.curves[0], k.curves[1]}},
+                           {"gap", k.gap},
+                           {"tangent_angle_deg", k.tangent_angle_deg},
+                           {"curvature_jump", k.curvature_jump}});
   return j.dump(2) + "\n";
 }
 
@@ -167,6 +187,20 @@ std::string report_to_text(const SceneReport& r) {
   for (const VertexReport& v : r.vertices) {
     std::snprintf(buf, sizeof buf, "vertex %-4d end tangents projected, up to %.3g deg\n", v.vertex,
                   v.tangent_plane_deviation_deg);
+    out += buf;
+  }
+  for (const CurveReport& c : r.curves) {
+    std::snprintf(buf, sizeof buf,
+                  "curve %-12s %-13s degree %d  points %d  spans %d  length %.10g  kappa [%.6g, "
+                  "%.6g]  inflections %d  non-finite %zu\n",
+                  c.name.c_str(), c.type.c_str(), c.degree, c.control_points, c.spans, c.length,
+                  c.curvature[0], c.curvature[1], c.inflections, c.nonfinite_samples);
+    out += buf;
+  }
+  for (const JointReport& k : r.joints) {
+    std::snprintf(buf, sizeof buf,
+                  "joint curves %d/%d  gap %.3g  tangent angle %.3g deg  curvature jump %.3g\n",
+                  k.curves[0], k.curves[1], k.gap, k.tangent_angle_deg, k.curvature_jump);
     out += buf;
   }
   if (out.empty()) out = "empty scene\n";

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/analysis/curve_analysis.hpp"
 #include "core/eval/scene_surfaces.hpp"
 
 namespace pl {
@@ -38,9 +39,13 @@ struct SceneReport {
   std::vector<PatchReport> patches;
   std::vector<EdgeReport> edges;
   std::vector<VertexReport> vertices;
+  std::vector<CurveReport> curves;  // free curves (core/analysis/curve_analysis.hpp)
+  std::vector<JointReport> joints;
 };
 
-SceneReport analyze_scene(const Scene& scene, const SceneSurfaces& surfaces);
+// curve_samples: samples per span of each free curve (the CLI's --density).
+SceneReport analyze_scene(const Scene& scene, const SceneSurfaces& surfaces,
+                          int curve_samples = 32);
 
 // Angle between two unit vectors in degrees, accurate for tiny angles (atan2 form).
 double angle_deg(const Vec3& a, const Vec3& b);

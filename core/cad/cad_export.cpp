@@ -5,10 +5,11 @@
 #include <cstdio>
 #include <sstream>
 
+#include "core/base/data_error.hpp"
 #include "core/cad/cad_model.hpp"
+#include "core/cad/curve_edges.hpp"
 #include "core/cad/occt_io.hpp"
 #include "core/cad/occt_shape.hpp"
-#include "core/base/data_error.hpp"
 
 namespace pl {
 
@@ -50,46 +51,61 @@ CadExportReport export_cad(const Scene& scene, const std::filesystem::path& targ
   if (options.tolerance && !(*options.tolerance > 0 && std::isfinite(*options.tolerance)))
     throw DataError(options.source, "", "the tolerance must be a positive number");
   std::vector<CadPiece> pieces = cad_pieces(scene, options.scheme, options.source);
-  if (pieces.empty()) throw DataError(options.source, "", "the scene has no surface to export");
-  CadModelOptions mo;
-  mo.tolerance = options.tolerance;
-  CadModel model;
-  try {
-    model = build_cad_model(std::move(pieces), mo);
-  } catch (const DataError&) {
-    throw;
-  } catch (const std::exception& e) {
-    throw DataError(options.source, "", std::string("cannot export: ") + e.what());
-  }
-  for (const CadFace& f : model.faces)
-    if (!f.converged) {
-      // Only the position tolerance is an option; say which one failed.
-      const bool position = f.position_deviation > model.tolerance;
-      throw DataError(options.source, f.name,
-                      "the fit did not reach the tolerance " + format_number(model.tolerance) +
-                          " / " + format_number(model.normal_tolerance_deg) + " deg (deviation " +
-                          format_number(f.position_deviation) + ", " +
-                          format_number(f.normal_deviation_deg) + " deg)" +
-                          (position ? "; try a larger --tolerance" : ""));
+  if (pieces.empty() && scene.curves.empty())
+    throw DataError(options.source, "", "the scene has no surface or curve to export");
+  // Free curves: exact (rational) B-spline edges, named as the scene names them.
+  std::vector<std::pair<std::string, TopoDS_Edge>> curves;
+  for (std::size_t i = 0; i < scene.curves.size(); ++i) {
+    try {
+      curves.emplace_back(curve_name(scene.curves[i], i), curve_edge(scene.curves[i]));
+    } catch (const std::exception& e) {
+      throw DataError(options.source, "curves[" + std::to_string(i) + "]",
+                      std::string("cannot export: ") + e.what());
     }
+  }
   CadExportReport r;
   r.format = *format;
   r.target = target;
-  r.size = model.size;
-  r.tolerance = model.tolerance;
-  r.normal_tolerance_deg = model.normal_tolerance_deg;
-  r.sewing_tolerance = kSewingTolerance * model.size;
+  r.curves = static_cast<int>(curves.size());
+  CadModel model;
   SewnShape sewn;
-  try {
-    sewn = sew_model(model, r.sewing_tolerance);
-  } catch (const std::exception& e) {
-    throw DataError(options.source, "", std::string("cannot build the shape: ") + e.what());
+  ShellReport shell;
+  if (!pieces.empty()) {
+    CadModelOptions mo;
+    mo.tolerance = options.tolerance;
+    try {
+      model = build_cad_model(std::move(pieces), mo);
+    } catch (const DataError&) {
+      throw;
+    } catch (const std::exception& e) {
+      throw DataError(options.source, "", std::string("cannot export: ") + e.what());
+    }
+    for (const CadFace& f : model.faces)
+      if (!f.converged) {
+        // Only the position tolerance is an option; say which one failed.
+        const bool position = f.position_deviation > model.tolerance;
+        throw DataError(options.source, f.name,
+                        "the fit did not reach the tolerance " + format_number(model.tolerance) +
+                            " / " + format_number(model.normal_tolerance_deg) + " deg (deviation " +
+                            format_number(f.position_deviation) + ", " +
+                            format_number(f.normal_deviation_deg) + " deg)" +
+                            (position ? "; try a larger --tolerance" : ""));
+      }
+    r.size = model.size;
+    r.tolerance = model.tolerance;
+    r.normal_tolerance_deg = model.normal_tolerance_deg;
+    r.sewing_tolerance = kSewingTolerance * model.size;
+    try {
+      sewn = sew_model(model, r.sewing_tolerance);
+    } catch (const std::exception& e) {
+      throw DataError(options.source, "", std::string("cannot build the shape: ") + e.what());
+    }
+    shell = analyze_shell(sewn.shape);
   }
-  const ShellReport shell = analyze_shell(sewn.shape);
   std::string product = scene.name;
   if (product.empty()) product = std::filesystem::path(options.source).stem().string();
   if (product.empty()) product = target.stem().string();
-  write_cad_file(sewn, model, product, *format, target);
+  write_cad_file(sewn, model, product, *format, target, curves);
 
   for (const CadFace& f : model.faces) {
     CadFaceReport fr;
@@ -118,10 +134,17 @@ CadExportReport export_cad(const Scene& scene, const std::filesystem::path& targ
 
 std::string cad_report_text(const CadExportReport& r) {
   std::ostringstream os;
+  if (r.faces.empty()) {
+    os << "wrote " << r.curves << " curve(s) to " << r.target.string() << " ("
+       << (r.format == CadFormat::Step ? "STEP AP242" : "IGES")
+       << ", millimetres) as exact (rational) B-spline curves\n";
+    return os.str();
+  }
   os << "wrote " << r.faces.size() << " face(s) to " << r.target.string() << " ("
      << (r.format == CadFormat::Step ? "STEP AP242" : "IGES") << ", millimetres): " << r.exact_faces
      << " exact, " << r.fitted_faces << " fitted to " << format_number(r.tolerance) << " and "
      << format_number(r.normal_tolerance_deg) << " deg\n";
+  if (r.curves > 0) os << "wrote " << r.curves << " curve(s) as exact (rational) B-spline curves\n";
   std::size_t width = 4;
   for (const CadFaceReport& f : r.faces) width = std::max(width, f.name.size());
   char line[256];

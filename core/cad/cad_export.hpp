@@ -38,6 +38,7 @@ struct CadExportReport {
   std::filesystem::path target;
   double size = 0, tolerance = 0, normal_tolerance_deg = 0.05;
   std::vector<CadFaceReport> faces;
+  int curves = 0;  // free curves, written as exact (rational) B-spline edges
   int exact_faces = 0, fitted_faces = 0;
   // The sewn shape, as written.
   int shells = 0, closed_shells = 0, solids = 0;

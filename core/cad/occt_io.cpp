@@ -35,8 +35,8 @@
 #include <fstream>
 #include <mutex>
 
-#include "core/io/atomic_file.hpp"
 #include "core/base/data_error.hpp"
+#include "core/io/atomic_file.hpp"
 
 namespace pl {
 
@@ -88,17 +88,31 @@ void quiet_occt() {
 }
 
 void write_cad_file(const SewnShape& shape, const CadModel& model, const std::string& product,
-                    CadFormat format, const std::filesystem::path& target) {
+                    CadFormat format, const std::filesystem::path& target,
+                    const std::vector<std::pair<std::string, TopoDS_Edge>>& curves) {
   quiet_occt();
   const std::lock_guard<std::mutex> lock(occt_mutex);
   XdeDocument xde;
   const Handle(XCAFDoc_ShapeTool) st = xde.shapes();
-  const TDF_Label root = st->AddShape(shape.shape, Standard_False);
+  TopoDS_Shape whole = shape.shape;
+  if (!curves.empty()) {  // the surfaces and the curves in one compound
+    BRep_Builder b;
+    TopoDS_Compound c;
+    b.MakeCompound(c);
+    if (!shape.shape.IsNull()) b.Add(c, shape.shape);
+    for (const auto& [name, edge] : curves) b.Add(c, edge);
+    whole = c;
+  }
+  const TDF_Label root = st->AddShape(whole, Standard_False);
   set_name(root, product);
   for (std::size_t i = 0; i < shape.faces.size(); ++i) {
     if (shape.faces[i].IsNull()) continue;
     const TDF_Label l = st->AddSubShape(root, shape.faces[i]);
     if (!l.IsNull()) set_name(l, model.faces[i].name);
+  }
+  for (const auto& [name, edge] : curves) {
+    const TDF_Label l = st->AddSubShape(root, edge);
+    if (!l.IsNull()) set_name(l, name);
   }
   const std::string where = target.string();
   write_atomically_via(target, [&](const std::filesystem::path& tmp) {

@@ -3,6 +3,7 @@
 // millimetres (one scene unit = 1 mm).
 #pragma once
 
+#include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 #include <filesystem>
@@ -17,8 +18,10 @@ namespace pl {
 
 // Writes atomically (temporary file beside the target, renamed on success). Throws DataError
 // naming the target and the reason.
+// Free curves go in as named edges beside the sewn shape (`curves`, with their names).
 void write_cad_file(const SewnShape& shape, const CadModel& model, const std::string& product,
-                    CadFormat format, const std::filesystem::path& target);
+                    CadFormat format, const std::filesystem::path& target,
+                    const std::vector<std::pair<std::string, TopoDS_Edge>>& curves = {});
 
 struct CadFile {
   TopoDS_Shape shape;

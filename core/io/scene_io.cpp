@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "core/io/atomic_file.hpp"
+#include "core/io/curve_codec.hpp"
 #include "core/io/input_limits.hpp"
 #include "core/io/json_node.hpp"
 #include "core/io/patch_codec.hpp"
@@ -159,7 +160,7 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   const JsonNode version = root.at("patchlab");
   if (!version.raw().is_number_integer() || version.raw().get<long long>() != 1)
     version.fail("unsupported format version " + version.raw().dump() + " (this reader knows 1)");
-  root.allow_only({"patchlab", "name", "network", "patches", "view"});
+  root.allow_only({"patchlab", "name", "network", "patches", "curves", "view"});
   Scene scene;
   if (auto name = root.find("name")) scene.name = name->string();
   if (auto net = root.find("network")) {
@@ -168,6 +169,14 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   }
   if (auto patches = root.find("patches"))
     for (const JsonNode& p : patches->items()) scene.patches.push_back(read_patch(p));
+  if (auto curves = root.find("curves"))
+    for (const JsonNode& c : curves->items()) {
+      scene.curves.push_back(read_curve(c));
+      // A curve shrunk to a point has no tangent or curvature (a Hermite curve may start and end
+      // at one point: its tangents give it extent).
+      if (scene.curves.back().type != CurveType::Hermite)
+        check_span(scene.curves.back().points, source, c.path() + ".points");
+    }
   check_spans(scene, source);
   if (auto view = root.find("view")) {
     view->require_object();
@@ -225,6 +234,10 @@ std::string scene_to_json(const Scene& scene) {
       codec->write(*sp.patch, jp);
       doc["patches"].push_back(jp);
     }
+  }
+  if (!scene.curves.empty()) {
+    doc["curves"] = nlohmann::json::array();
+    for (const SceneCurve& c : scene.curves) doc["curves"].push_back(curve_json(c));
   }
   if (!scene.view_json.empty()) doc["view"] = nlohmann::json::parse(scene.view_json);
   return doc.dump(1) + "\n";

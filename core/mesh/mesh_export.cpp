@@ -6,6 +6,7 @@
 #include "core/mesh/mesh_export.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
@@ -47,7 +48,8 @@ Vec3 facet_normal(const SurfaceMesh& m, const std::array<uint32_t, 3>& t) {
   return glm::normalize(n);
 }
 
-void write_obj(const std::vector<SurfaceMesh>& meshes, std::FILE* f) {
+void write_obj(const std::vector<SurfaceMesh>& meshes, const std::vector<CurvePolyline>& polylines,
+               std::FILE* f) {
   std::fprintf(f, "# PatchLab %s\n", PATCHLAB_VERSION);
   std::size_t base = 1;
   for (const SurfaceMesh& m : meshes) {
@@ -59,6 +61,14 @@ void write_obj(const std::vector<SurfaceMesh>& meshes, std::FILE* f) {
       std::fprintf(f, "f %zu//%zu %zu//%zu %zu//%zu\n", a, a, b, b, c, c);
     }
     base += m.positions.size();
+  }
+  for (const CurvePolyline& l : polylines) {
+    std::fprintf(f, "o %s\n", l.name.c_str());
+    for (const Vec3& p : l.points) std::fprintf(f, "v %.17g %.17g %.17g\n", p.x, p.y, p.z);
+    std::fprintf(f, "l");
+    for (std::size_t i = 0; i < l.points.size(); ++i) std::fprintf(f, " %zu", base + i);
+    std::fprintf(f, "\n");
+    base += l.points.size();
   }
 }
 
@@ -141,14 +151,19 @@ MeshFormat mesh_format_for(const std::filesystem::path& path) {
 }
 
 void export_meshes(const std::vector<SurfaceMesh>& meshes, const std::filesystem::path& path,
-                   const std::string& source) {
+                   const std::string& source, const std::vector<CurvePolyline>& polylines) {
   const MeshFormat format = mesh_format_for(path);
   check_finite(meshes, source.empty() ? path.string() : source);
+  for (const CurvePolyline& l : polylines)
+    for (std::size_t i = 0; i < l.points.size(); ++i)
+      if (!std::isfinite(l.points[i].x + l.points[i].y + l.points[i].z))
+        throw DataError(source.empty() ? path.string() : source, l.name,
+                        "curve sample " + std::to_string(i) + " is not finite");
   write_atomically_via(path, [&](const std::filesystem::path& tmp) {
     std::FILE* f = open_for_writing(tmp, path);
     switch (format) {
       case MeshFormat::Obj:
-        write_obj(meshes, f);
+        write_obj(meshes, polylines, f);
         break;
       case MeshFormat::Ply:
         write_ply(meshes, f);

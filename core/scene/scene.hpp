@@ -1,4 +1,4 @@
-// A PatchLab scene (scene-format.md): an optional curve network and explicit patches.
+// A PatchLab scene (scene-format.md): an optional curve network, explicit patches and free curves.
 #pragma once
 
 #include <memory>
@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/curve/scene_curve.hpp"
 #include "core/patch/patch.hpp"
 #include "core/scene/network.hpp"
 
@@ -20,6 +21,7 @@ struct Scene {
   std::string name;
   std::optional<Network> network;
   std::vector<ScenePatch> patches;
+  std::vector<SceneCurve> curves;  // free curves (scene-format.md, section Curves)
   std::string view_json;  // the editor's "view" object, kept verbatim (empty if absent)
 };
 

@@ -133,7 +133,8 @@ TEST(EditorPicking, PointsFirstThenCurvesThenSurfaces) {
   r = picker.pick(scene, c, kRect, *project_to_window(c, kRect, v2), {false, true});
   ASSERT_TRUE(r.item);
   ASSERT_EQ(r.item->kind, SelectionItem::Kind::Edge);
-  const NetworkEdge& e = default_scene().network->edges[r.item->index];
+  const Scene shipped = default_scene();  // kept alive: e refers into it
+  const NetworkEdge& e = shipped.network->edges[r.item->index];
   EXPECT_TRUE(e.v[0] == 2 || e.v[1] == 2);
   // The middle of every edge's curve picks that edge (points hidden: handles may sit there).
   for (std::size_t k = 0; k < live.draw().network_curves.size(); ++k) {

@@ -39,5 +39,6 @@ void bench_gb_face(const Options& options);
 void bench_engine(const Options& options);
 void bench_catmull_clark(const Options& options);
 void bench_cad(const Options& options);
+void bench_curve(const Options& options);
 
 }  // namespace pl::bench

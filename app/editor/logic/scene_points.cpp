@@ -86,6 +86,8 @@ void fill_overlays(const Scene& scene, const ScenePoints& points, DrawScene& dra
   draw.net.segments = points.segments;
   draw.network_curves.clear();
   if (scene.network) draw.network_curves = network_polylines(*scene.network);
+  draw.free_curves.clear();
+  for (const SceneCurve& c : scene.curves) draw.free_curves.push_back(free_curve_polyline(c));
 }
 
 }  // namespace pl

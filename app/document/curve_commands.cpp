@@ -1,0 +1,146 @@
+#include "app/document/curve_commands.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "core/curve/bspline_curve.hpp"
+
+namespace pl {
+
+namespace {
+
+SceneCurve& curve_at(Scene& scene, int c) {
+  if (c < 0 || c >= int(scene.curves.size()))
+    throw EditRefused("curve " + std::to_string(c) + " does not exist");
+  return scene.curves[c];
+}
+
+// The edited curve must still be one the reader accepts.
+void check(const SceneCurve& c) {
+  try {
+    validate_curve(c);
+  } catch (const std::invalid_argument& e) {
+    throw EditRefused(e.what());
+  }
+}
+
+}  // namespace
+
+void AddCurveCommand::apply(Scene& scene) {
+  SceneCurve c;
+  c.type = type_;
+  const std::size_t n = points_.size();
+  switch (type_) {
+    case CurveType::Bezier:
+      c.points = points_;
+      break;
+    case CurveType::Interpolating:
+      if (n != 4) throw EditRefused("an interpolating cubic takes 4 points");
+      c.points = points_;
+      break;
+    case CurveType::Hermite:
+      if (n < 2) throw EditRefused("a Hermite curve takes at least 2 points");
+      c.points = {points_.front(), points_.back()};
+      c.tangents = {points_[1] - points_[0], points_[n - 1] - points_[n - 2]};
+      break;
+    case CurveType::BSpline:
+    case CurveType::Nurbs: {
+      if (n < 2) throw EditRefused("a B-spline takes at least 2 points");
+      c.degree = std::min<int>(3, static_cast<int>(n) - 1);
+      c.points = points_;
+      c.knots = BSplineCurve::clamped_uniform_knots(c.degree, n);
+      if (type_ == CurveType::Nurbs) c.weights.assign(n, 1.0);
+      break;
+    }
+  }
+  check(c);
+  curve_ = static_cast<int>(scene.curves.size());
+  scene.curves.push_back(std::move(c));
+}
+
+std::string AddCurveCommand::label() const {
+  return "add " + std::string(curve_type_name(type_)) + " curve";
+}
+
+void MoveCurvePointCommand::apply(Scene& scene) {
+  SceneCurve& c = curve_at(scene, curve_);
+  if (point_ < 0 || point_ >= int(c.points.size()))
+    throw EditRefused("curve " + std::to_string(curve_) + " has no point " +
+                      std::to_string(point_));
+  c.points[point_] = position_;
+  check(c);
+}
+
+std::string MoveCurvePointCommand::label() const {
+  return "move curve " + std::to_string(curve_) + " point " + std::to_string(point_);
+}
+
+std::string MoveCurvePointCommand::merge_key() const {
+  return label();
+}
+
+void SetCurveWeightCommand::apply(Scene& scene) {
+  SceneCurve& c = curve_at(scene, curve_);
+  if (c.type != CurveType::BSpline && c.type != CurveType::Nurbs)
+    throw EditRefused("only B-spline and NURBS curves have weights");
+  if (point_ < 0 || point_ >= int(c.points.size()))
+    throw EditRefused("curve " + std::to_string(curve_) + " has no point " +
+                      std::to_string(point_));
+  if (!(weight_ > 0) || !std::isfinite(weight_))
+    throw EditRefused("a weight must be positive and finite");
+  if (c.type == CurveType::BSpline) {
+    c.type = CurveType::Nurbs;
+    c.weights.assign(c.points.size(), 1.0);
+  }
+  c.weights[point_] = weight_;
+  check(c);
+}
+
+std::string SetCurveWeightCommand::label() const {
+  return "weight of curve " + std::to_string(curve_) + " point " + std::to_string(point_);
+}
+
+void CurveOperationCommand::apply(Scene& scene) {
+  SceneCurve& c = curve_at(scene, curve_);
+  try {
+    switch (op_) {
+      case Operation::InsertKnot:
+        c = curve_knot_inserted(c, t_);
+        break;
+      case Operation::ElevateDegree:
+        c = curve_degree_elevated(c);
+        break;
+      case Operation::Reverse:
+        c = curve_reversed(c);
+        break;
+      case Operation::Split: {
+        auto [a, b] = curve_split(c, t_);
+        check(a);
+        check(b);
+        c = std::move(a);
+        scene.curves.insert(scene.curves.begin() + curve_ + 1, std::move(b));
+        return;
+      }
+    }
+  } catch (const std::invalid_argument& e) {
+    throw EditRefused(e.what());
+  }
+  check(scene.curves[curve_]);
+}
+
+std::string CurveOperationCommand::label() const {
+  const std::string c = "curve " + std::to_string(curve_);
+  switch (op_) {
+    case Operation::InsertKnot:
+      return "insert knot in " + c;
+    case Operation::ElevateDegree:
+      return "elevate degree of " + c;
+    case Operation::Split:
+      return "split " + c;
+    case Operation::Reverse:
+      return "reverse " + c;
+  }
+  return c;
+}
+
+}  // namespace pl

@@ -1,0 +1,59 @@
+// The figures `analyze` reports for free curves: arc length, curvature range, inflections; and
+// the joints of concatenated curves (gap, tangent angle, curvature jump: G0, G1, G2).
+#pragma once
+
+#include <array>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/curve/scene_curve.hpp"
+
+namespace pl {
+
+struct CurveReport {
+  std::string name, type;
+  int degree = 0, control_points = 0, spans = 0;
+  double length = 0;
+  std::array<double, 2> curvature{0, 0};  // min, max of kappa over the samples
+  int inflections = 0;
+  std::size_t nonfinite_samples = 0;
+};
+
+struct JointReport {
+  std::array<int, 2> curves{-1, -1};
+  double gap = 0, tangent_angle_deg = 0, curvature_jump = 0;
+};
+
+// Arc length by Gauss-Legendre quadrature on every span, subdivided until two successive
+// refinements agree to 1e-13 relative.
+double curve_length(const SceneCurve& c);
+
+// Signed-curvature sign changes along t for a planar curve (0 for a curve that is not planar or
+// is straight), from the curve's samples at curve_sample_parameters(c, per_span).
+int curve_inflections(const SceneCurve& c, int per_span);
+
+// `name` is the curve's name or curve<i>; samples: per_span per span.
+CurveReport analyze_curve(const SceneCurve& c, const std::string& name, int per_span);
+
+// The figures of a joint where one curve arrives (a, with its derivatives in the direction of
+// travel) and the next leaves (b): the distance, the angle between the tangents in degrees and
+// the length of the difference of the curvature vectors.
+JointReport joint_figures(const CurvePoint& a, const CurvePoint& b);
+
+// Every pair of curve ends within 1e-9 of the curves' size (the diagonal of the bounding box of
+// their control points): an end and the start or end of another curve, or the two ends of one
+// closed curve.
+std::vector<JointReport> curve_joints(std::span<const SceneCurve> curves);
+
+// Throws DataError(source, "curves[index]", ...) naming the first parameter where the curve's
+// position, derivatives, curvature or arc length are not finite (numbers in range whose
+// products overflow, e.g. a huge weight on a huge coordinate): the figures, pictures and
+// exports of a curve are finite or refused.
+void check_curve_finite(const SceneCurve& c, std::size_t index, int per_span,
+                        const std::string& source);
+
+// Curvature vector kappa N = (C'' - (C''.T) T) / |C'|^2: the same whichever way the curve runs.
+Vec3 curvature_vector(const CurvePoint& c);
+
+}  // namespace pl
