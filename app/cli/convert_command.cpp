@@ -4,32 +4,13 @@
 #include "app/cli/cli.hpp"
 #include "app/cli/commands.hpp"
 #include "app/cli/load_input.hpp"
+#include "app/document/scene_file.hpp"
 #include "core/base/data_error.hpp"
 #include "core/io/gbp_io.hpp"
 #include "core/io/scene_io.hpp"
 #include "core/patch/gb/gb_patch.hpp"
 
 namespace pl {
-
-namespace {
-
-const GBPatch& single_gb_patch(const Scene& scene, const std::string& file) {
-  if (scene.network)
-    throw DataError(file, "network",
-                    "a .gbp holds exactly one gb patch; this scene has a curve network");
-  if (scene.patches.size() != 1)
-    throw DataError(file, "patches",
-                    "a .gbp holds exactly one gb patch; this scene has " +
-                        std::to_string(scene.patches.size()) + " explicit patches");
-  const auto* gb = dynamic_cast<const GBPatch*>(scene.patches[0].patch.get());
-  if (!gb)
-    throw DataError(file, "patches[0]",
-                    "a .gbp holds a gb patch; this patch is of type \"" +
-                        scene.patches[0].patch->type() + "\"");
-  return *gb;
-}
-
-}  // namespace
 
 int run_convert(std::span<const std::string> args, std::ostream& out, std::ostream&) {
   const Arguments a(args, {"-o"}, {});

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "app/document/scene_file.hpp"
 #include "core/base/data_error.hpp"
 #include "core/io/scene_io.hpp"
 
@@ -162,7 +163,7 @@ void Document::save() {
 
 void Document::save_as(const std::filesystem::path& path) {
   if (drag_) end_drag();
-  write_scene(path, scene_);
+  save_scene_file(path, scene_);
   path_ = path;
   saved_position_ = history_position_;
   may_merge_ = false;

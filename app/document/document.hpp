@@ -64,7 +64,8 @@ class Document {
   bool dragging() const { return drag_.has_value(); }
   const std::vector<PointRef>& drag_points() const;
 
-  // Atomic; throws DataError and keeps the previous file on failure.
+  // Atomic, as the extension says (scene_file.hpp: .json, or .gbp for a single GB patch);
+  // throws DataError and keeps the previous file (and the document's path) on failure.
   void save();
   void save_as(const std::filesystem::path& path);
 

@@ -1,54 +1,131 @@
-// The Continuity section: per shared edge the G0 gap, G1 normal angle and mean-curvature jump of
-// the fine surfaces; a row click selects the edge (drawn in the view like any selection).
+// The Continuity section: the warning threshold, then per filling (the scene's own, or the
+// comparison's Gregory and GB fillings, each labelled) a one-line verdict, per shared edge the
+// G0 gap, G1 normal angle and mean-curvature jump of the fine surfaces, and the vertices whose
+// end tangents were projected into their tangent plane. Edges over the threshold are marked and
+// the worst one is drawn in the highlight colour in its view; a row click selects its edge.
 #include <imgui.h>
 
 #include <algorithm>
 #include <cstdio>
 
 #include "app/editor/side_panel.hpp"
+#include "render/palette.hpp"
 
 namespace pl {
 
-void draw_continuity_section(const SidePanel& p) {
-  const SceneReport& report = p.continuity.report();
+namespace {
+
+ImVec4 highlight() {
+  const Rgb c = palette::kHighlight;
+  return ImVec4(c[0], c[1], c[2], 1);
+}
+
+void draw_filling(const SidePanel& p, const ContinuityMonitor::Filling& f, std::size_t index,
+                  double threshold) {
+  const SceneReport& report = f.report;
+  const std::vector<int> over = p.continuity.warnings(index, threshold);
+  if (!f.label.empty()) {
+    ImGui::Separator();
+    ImGui::TextUnformatted(f.label.c_str());
+  }
   if (report.edges.empty()) {
     ImGui::TextDisabled("No shared edges.");
-    return;
+  } else if (over.empty()) {
+    ImGui::TextWrapped("No edge above %.3g deg (largest %.3g deg).", threshold,
+                       report.edges[f.worst].max_normal_angle_deg);
+  } else {
+    ImGui::PushStyleColor(ImGuiCol_Text, highlight());
+    ImGui::TextWrapped("! %zu edge%s above %.3g deg (largest %.3g deg, edge %d).", over.size(),
+                       over.size() == 1 ? "" : "s", threshold,
+                       report.edges[over[0]].max_normal_angle_deg, report.edges[over[0]].edge);
+    ImGui::PopStyleColor();
   }
-  const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
-                                ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingStretchProp;
-  const float h = std::min(ImGui::GetTextLineHeightWithSpacing() * (report.edges.size() + 1.6f),
-                           ImGui::GetContentRegionAvail().y);
-  if (!ImGui::BeginTable("continuity", 4, flags, ImVec2(0, h))) return;
-  ImGui::TableSetupScrollFreeze(0, 1);
-  ImGui::TableSetupColumn("edge");
-  ImGui::TableSetupColumn("G0 gap");
-  ImGui::TableSetupColumn("G1 deg");
-  ImGui::TableSetupColumn("H jump");
-  ImGui::TableHeadersRow();
-  for (int i = 0; i < int(report.edges.size()); ++i) {
-    const EdgeReport& e = report.edges[i];
-    ImGui::TableNextRow();
-    ImGui::TableNextColumn();
-    const bool worst = i == p.continuity.worst();
-    char label[64];
-    std::snprintf(label, sizeof label, "%s%d (%d|%d)", worst ? "! " : "", e.edge, e.faces[0],
-                  e.faces[1]);
-    if (worst) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.42f, 1));
-    const SelectionItem item = SelectionItem::edge(e.edge);
-    if (ImGui::Selectable(label, p.selection.contains(item), ImGuiSelectableFlags_SpanAllColumns))
-      p.selection.set({item});
-    ImGui::TableNextColumn();
-    ImGui::Text("%.2e", e.max_gap);
-    ImGui::TableNextColumn();
-    ImGui::Text("%.3f", e.max_normal_angle_deg);
-    ImGui::TableNextColumn();
-    ImGui::Text("%.3g", e.max_mean_curvature_jump);
-    if (worst) ImGui::PopStyleColor();
+  if (!report.edges.empty()) {
+    const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
+                                  ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingStretchProp;
+    // At most about ten rows each: two fillings share the panel in the comparison.
+    const float rows = std::min<float>(float(report.edges.size()), 10.0f);
+    const float h = ImGui::GetTextLineHeightWithSpacing() * (rows + 1.6f);
+    const std::string id = "continuity" + std::to_string(index);
+    if (ImGui::BeginTable(id.c_str(), 4, flags, ImVec2(0, h))) {
+      ImGui::TableSetupScrollFreeze(0, 1);
+      ImGui::TableSetupColumn("edge");
+      ImGui::TableSetupColumn("G0 gap");
+      ImGui::TableSetupColumn("G1 deg");
+      ImGui::TableSetupColumn("H jump");
+      ImGui::TableHeadersRow();
+      for (int i = 0; i < int(report.edges.size()); ++i) {
+        const EdgeReport& e = report.edges[i];
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        const bool warn = e.max_normal_angle_deg > threshold;
+        char label[64];
+        std::snprintf(label, sizeof label, "%s%d (%d|%d)##%zu", warn ? "! " : "", e.edge,
+                      e.faces[0], e.faces[1], index);
+        if (warn) ImGui::PushStyleColor(ImGuiCol_Text, highlight());
+        const SelectionItem item = SelectionItem::edge(e.edge);
+        if (ImGui::Selectable(label, p.selection.contains(item),
+                              ImGuiSelectableFlags_SpanAllColumns))
+          p.selection.set({item});
+        ImGui::TableNextColumn();
+        ImGui::Text("%.2e", e.max_gap);
+        ImGui::TableNextColumn();
+        ImGui::Text("%.3g", e.max_normal_angle_deg);
+        ImGui::TableNextColumn();
+        ImGui::Text("%.3g", e.max_mean_curvature_jump);
+        if (warn) ImGui::PopStyleColor();
+      }
+      ImGui::EndTable();
+    }
   }
-  ImGui::EndTable();
+  // Where the network's tangent planes could not hold every end tangent: the surface is still
+  // G1 there, but the curves' tangents were changed by this much.
+  if (!report.vertices.empty()) {
+    ImGui::TextUnformatted("End tangents projected into the vertex plane:");
+    for (const VertexReport& v : report.vertices) {
+      const SelectionItem item = SelectionItem::of_point(PointRef::vertex(v.vertex));
+      char label[64];
+      std::snprintf(label, sizeof label, "  vertex %d: %.3g deg##pv%zu", v.vertex,
+                    v.tangent_plane_deviation_deg, index);
+      if (ImGui::Selectable(label, p.selection.contains(item))) p.selection.set({item});
+    }
+  }
+}
+
+}  // namespace
+
+void follow_continuity(ContinuityMonitor& monitor, const SceneViews& views, const Document& doc) {
+  if (!views.ready()) return;
+  // The figures follow the fine surfaces only, once they have settled.
+  std::vector<ContinuityMonitor::Input> inputs;
+  if (views.compare()) {
+    const char* labels[2] = {"Gregory filling", "GB filling"};
+    for (int i = 0; i < 2; ++i) {
+      if (!views.panel(i).settled()) return;
+      inputs.push_back({labels[i], &views.panel(i).fine().surfaces()});
+    }
+  } else {
+    if (!views.settled()) return;
+    inputs.push_back({"", &views.main()->fine().surfaces()});
+  }
+  monitor.follow(doc.scene(), inputs, doc.revision());
+}
+
+void draw_continuity_section(const SidePanel& p) {
+  double& threshold = p.prefs.continuity_threshold_deg;
+  ImGui::InputDouble("Warn above", &threshold, 0, 0, "%.3g deg");
+  threshold = std::clamp(threshold, kMinContinuityThresholdDeg, kMaxContinuityThresholdDeg);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "An edge is a warning when the normals of its two faces differ by more\n"
+        "than this anywhere along it (kept in the preferences)");
+  const auto& fillings = p.continuity.fillings();
+  for (std::size_t i = 0; i < fillings.size(); ++i) draw_filling(p, fillings[i], i, threshold);
+  if (fillings.empty()) ImGui::TextDisabled("Waiting for the surfaces.");
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-  ImGui::TextWrapped("Red: the edge with the largest normal angle. A row selects its edge.");
+  ImGui::TextWrapped(
+      "Yellow: edges over the threshold; the worst is drawn yellow in its view. "
+      "A row selects its edge or vertex.");
   ImGui::PopStyleColor();
 }
 

@@ -12,10 +12,7 @@ bool draw_display_section(const SidePanel& p) {
   static const char* modes[] = {"Shaded", "Isophotes", "Zebra", "Curvature"};
   int base = static_cast<int>(d.base);
   ImGui::SetNextItemWidth(-1);
-  if (ImGui::Combo("##mode", &base, modes, 4)) {
-    d.base = static_cast<BaseMode>(base);
-    if (d.base == BaseMode::Isophotes) d.isophote_lines = true;
-  }
+  if (ImGui::Combo("##mode", &base, modes, 4)) d.base = static_cast<BaseMode>(base);
   if (d.base == BaseMode::Curvature) {
     static const char* kinds[] = {"Gaussian K", "Mean H", "k min", "k max"};
     int k = static_cast<int>(d.curvature);
@@ -42,9 +39,14 @@ bool draw_display_section(const SidePanel& p) {
     float w = float(d.zebra_width);
     if (ImGui::SliderFloat("Dark fraction", &w, 0.05f, 0.95f)) d.zebra_width = w;
   }
-  ImGui::Checkbox("Isophote lines", &d.isophote_lines);
-  if (d.base == BaseMode::Isophotes) d.isophote_lines = true;
-  if (d.isophote_lines) {
+  // The switch shows what is drawn in this mode (the isophote mode's lines are the mode itself).
+  bool lines = isophote_switch(d);
+  ImGui::BeginDisabled(d.base == BaseMode::Isophotes);
+  if (ImGui::Checkbox(d.base == BaseMode::Zebra ? "Isophote lines over stripes" : "Isophote lines",
+                      &lines))
+    set_isophote_switch(d, lines);
+  ImGui::EndDisabled();
+  if (lines) {
     ImGui::SliderInt("Isophotes", &d.isophote_count, 2, 60);
     float w = float(d.isophote_width_px);
     if (ImGui::SliderFloat("Line width", &w, 0.5f, 5.0f, "%.1f px")) d.isophote_width_px = w;
@@ -73,6 +75,15 @@ bool draw_display_section(const SidePanel& p) {
     ImGui::SliderInt("Comb teeth", &d.comb_teeth, kMinCombTeeth, kMaxCombTeeth);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Teeth per curve");
   }
+  // The interface's size: the monitor's content scale unless the user picks one (applied from
+  // the next frame, kept in the preferences).
+  static const double kScales[] = {0, 1.0, 1.25, 1.5, 1.75, 2.0};
+  static const char* kScaleNames[] = {"Auto (monitor)", "100 %", "125 %",
+                                      "150 %",          "175 %", "200 %"};
+  int scale = 0;
+  for (int i = 0; i < 6; ++i)
+    if (p.prefs.ui_scale == kScales[i]) scale = i;
+  if (ImGui::Combo("Interface", &scale, kScaleNames, 6)) p.prefs.ui_scale = kScales[scale];
   int densities[2] = {p.prefs.coarse_density, p.prefs.fine_density};
   if (ImGui::SliderInt2("Density", densities, 4, 96)) {
     p.prefs.coarse_density = densities[0];

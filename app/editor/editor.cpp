@@ -34,21 +34,11 @@ Editor::Editor(GlWindow& window, EditorOptions options, DocumentSession session)
     : window_(window),
       options_(std::move(options)),
       session_(std::move(session)),
-      dialogs_(FileDialogs::Handlers{[this](const std::filesystem::path& p) { open_file(p); },
-                                     [this](const std::filesystem::path& p) { save_as(p); },
-                                     [this](const std::filesystem::path& p) { export_mesh(p); },
-                                     [this](const std::filesystem::path& p) { take_screenshot(p); },
-                                     [this] {
-                                       if (session_.untitled()) return false;
-                                       save();
-                                       return true;
-                                     },
-                                     [this] { return session_.doc().dirty(); },
-                                     [this] { return browse_start_dir(); }}) {
+      dialogs_(file_dialog_handlers()),
+      autosave_(options_.bench_drag || options_.screenshot ? std::nullopt : state_dir()) {
   if (const auto dir = config_dir()) prefs_file_ = *dir / "preferences.ini";
   prefs_ = prefs_file_ ? load_preferences(*prefs_file_) : default_preferences();
-  ui_scale_ = prefs_.ui_scale > 0 ? static_cast<float>(prefs_.ui_scale) : window_.content_scale();
-  window_.apply_ui_scale(ui_scale_);
+  ui_scale_ = window_.follow_ui_scale(prefs_.ui_scale);
   tools_.add(std::make_unique<SelectTool>());
   tools_.add(std::make_unique<AddVertexTool>());
   tools_.add(std::make_unique<AddEdgeTool>());
@@ -59,6 +49,7 @@ Editor::Editor(GlWindow& window, EditorOptions options, DocumentSession session)
   // start the editor, so they catch it).
   if (const auto clashes = actions_.conflicts(); !clashes.empty())
     throw std::logic_error("a key is bound to two commands: " + clashes.front());
+  offer_recovery();
   glfwSetWindowUserPointer(window_.handle(), this);
   glfwSetDropCallback(window_.handle(), [](GLFWwindow* w, int count, const char** paths) {
     auto* self = static_cast<Editor*>(glfwGetWindowUserPointer(w));
@@ -74,12 +65,17 @@ Editor::Editor(GlWindow& window, EditorOptions options, DocumentSession session)
 
 Editor::~Editor() {
   if (prefs_file_ && !options_.bench_drag) save_preferences(*prefs_file_, prefs_);
+  autosave_.discard();  // a normal quit (a crash never gets here)
 }
 
 EditorLayout Editor::layout() const {
   const ImGuiIO& io = ImGui::GetIO();
-  return {Vec2(io.DisplaySize.x, io.DisplaySize.y), ImGui::GetFrameHeight(),
-          ImGui::GetFrameHeight() + 6.0 * ui_scale_, ui_scale_};
+  EditorLayout l{Vec2(io.DisplaySize.x, io.DisplaySize.y), ImGui::GetFrameHeight(),
+                 ImGui::GetFrameHeight() + 6.0 * ui_scale_, ui_scale_};
+  // The legends' column takes its width from the view, so no legend covers a panel.
+  l.legends =
+      int(view_legends(prefs_.display, views_.compare(), views_.difference, {-1, 1}, 1).size());
+  return l;
 }
 
 Box Editor::scene_box() const {
@@ -125,7 +121,7 @@ void Editor::rebuild_views(bool compare) {
 void Editor::set_compare(bool on) {
   if (on == views_.compare() || (on && !session_.doc().scene().network)) return;
   rebuild_views(on);
-  nav_.frame(scene_box(), layout().panels(views_.compare())[0].aspect());  // a new aspect
+  frame_shown();  // a new aspect: each panel filled again
 }
 
 void Editor::follow_document() {
@@ -147,8 +143,7 @@ void Editor::follow_document() {
   }
   // Continuity figures follow the fine surfaces only: analysing every drag step would cost
   // more than the drag itself.
-  if (views_.settled())
-    continuity_.follow(doc.scene(), views_.main()->fine().surfaces(), doc.revision());
+  follow_continuity(continuity_, views_, doc);
 }
 
 void Editor::update_title() {
@@ -204,13 +199,21 @@ void Editor::draw_interface(const ColorRange& range) {
   }
   draw_status_bar(status_, figures, ui_scale_);
 
+  if (views_.ready())
+    draw_legend_column(l.legend_column(),
+                       view_legends(prefs_.display, views_.compare(), views_.difference, range,
+                                    views_.difference_range()),
+                       ui_scale_);
   if (prefs_.show_probe && mouse_.probe && views_.ready()) {
     const auto& meshes = views_.panel(mouse_.panel).shown().draw().surfaces;
     const int s = mouse_.probe->surface;
+    std::optional<double> distance;
+    if (views_.showing_difference() && mouse_.panel == 1)
+      distance = views_.difference_field().distance_at(*mouse_.probe);
     draw_probe_window(*mouse_.probe, s >= 0 && s < int(meshes.size()) ? meshes[s].name : "",
-                      ui_scale_);
+                      distance, ui_scale_);
   }
-  if (show_help_) draw_help_window(&show_help_, actions_, ui_scale_);
+  if (show_help_) draw_help_window(&show_help_, actions_, help_key_, renderer_, ui_scale_);
   draw_rename();
   if (context_) {
     MenuItemProbe probe;
@@ -227,6 +230,7 @@ void Editor::draw_interface(const ColorRange& range) {
 
 void Editor::frame() {
   const auto start = Clock::now();
+  ui_scale_ = window_.follow_ui_scale(prefs_.ui_scale);  // the monitor's scale, followed
   window_.begin_frame();
   // A document replaced last frame (a menu, a dialog) first resets the parts that held the old
   // one; so does one replaced by a dropped file or a key now (handle_keys sees to that).
@@ -236,12 +240,9 @@ void Editor::frame() {
   handle_keys();
   handle_mouse();
   follow_document();
-  if (views_.ready() && !nav_.framed()) {
-    // An empty scene is framed as the unit cube about the origin, where new points go.
-    const Box box = scene_box().empty() ? Box{Vec3(-1), Vec3(1)} : scene_box();
-    nav_.preset(ViewPreset::Iso, box, layout().panels(views_.compare())[0].aspect());
-  }
+  if (views_.ready() && !nav_.framed()) open_view();
   const EditorLayout l = layout();
+  nav_.follow_panel(l.display, views_.compare(), l.panels(views_.compare())[0].width);
   ViewportFrame f;
   f.window = window_.handle();
   f.renderer = &renderer_;
@@ -262,6 +263,7 @@ void Editor::frame() {
   painter_.paint(f, range);
   draw_tool_feedback();
   draw_interface(range);
+  files_frame();
   update_title();
   window_.end_frame();
   key_presses_.clear();

@@ -24,9 +24,12 @@
 #include <utility>
 #include <vector>
 
+#include "app/editor/editor_windows.hpp"
 #include "app/editor/file_dialogs.hpp"
 #include "app/editor/gl_window.hpp"
 #include "app/editor/logic/actions.hpp"
+#include "app/editor/logic/autosave.hpp"
+#include "app/editor/logic/cad_export_job.hpp"
 #include "app/editor/logic/continuity_monitor.hpp"
 #include "app/editor/logic/document_session.hpp"
 #include "app/editor/logic/editor_layout.hpp"
@@ -120,11 +123,27 @@ class Editor {
   void new_scene();
   void open_file(const std::filesystem::path& path);
   void save();  // Save, or Save As for an untitled document
+  // Saves to the document's file and returns true (errors shown), or returns false when it
+  // cannot (untitled, or a .gbp that no longer holds the scene): Save As is needed.
+  bool save_in_place();
+  FileDialogs::Handlers file_dialog_handlers();
   void save_as(const std::filesystem::path& path);
-  void export_mesh(const std::filesystem::path& path);
+  void browse_save_as();  // Save As in the document's folder, with its name
+  // A mesh (.obj .ply .off .stl) at once, or a CAD file (.step .stp .igs .iges) on a worker.
+  void export_file(const std::filesystem::path& path);
   void take_screenshot(const std::filesystem::path& path);
   void handle_drops();
   std::filesystem::path browse_start_dir() const;
+  // Once a frame, inside the ImGui frame: the autosave while the scene is dirty, a finished
+  // export's report, and the busy indicator of a running one.
+  void files_frame();
+  void offer_recovery();  // the next autosave a crash left, if any
+  // The view a document opens with: it faces a single patch's front (default_camera), framed
+  // on what each panel shows.
+  void open_view();
+  // The same direction, framed tightly on what the panels show at their aspect.
+  void frame_shown();
+  std::vector<const DrawScene*> shown_scenes() const;
 
   // editor_debug.cpp
   void report_debug_items();
@@ -154,7 +173,10 @@ class Editor {
   ActionRegistry actions_;
   StatusLine status_;
   FileDialogs dialogs_;
+  Autosave autosave_;
+  CadExportJob cad_job_;
   ViewportPainter painter_;
+  PointKeyImage help_key_;  // F1's key of the control points' symbols
   Mouse mouse_;
   std::optional<ContextTarget> context_;           // the right-click menu is open on this
   std::optional<Clock::time_point> release_time_;  // waiting for the fine surfaces

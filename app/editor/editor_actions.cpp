@@ -7,6 +7,7 @@
 #include "app/editor/logic/add_vertex_tool.hpp"
 #include "app/editor/logic/authoring_actions.hpp"
 #include "app/editor/logic/make_face_tool.hpp"
+#include "app/editor/logic/patch_actions.hpp"
 #include "app/editor/logic/selection_actions.hpp"
 #include "app/editor/logic/selection_properties.hpp"
 
@@ -38,16 +39,15 @@ void Editor::register_actions() {
   r.add(make_action("file.save", "File", "Save", {"Ctrl+S"}, "save (asks for a name when untitled)",
                     [this] { save(); }));
   r.add(make_action("file.save_as", "File", "Save As...", {"Ctrl+Shift+S"}, "save under a new name",
-                    [this] {
-                      dialogs_.browse(FileDialogs::Purpose::SaveAs, browse_start_dir(),
-                                      session_.doc().path().filename().string());
-                    }));
-  Action exporting =
-      make_action("file.export", "File", "Export Mesh...", {},
-                  "the fine surfaces as OBJ, PLY, OFF or STL", [this] {
-                    dialogs_.browse(FileDialogs::Purpose::ExportMesh, browse_start_dir(),
-                                    session_.doc().path().stem().string() + ".obj");
-                  });
+                    [this] { browse_save_as(); }));
+  Action exporting = make_action(
+      "file.export", "File", "Export...", {},
+      "the fine surfaces as a mesh (OBJ, PLY, OFF, STL), or the patches as CAD surfaces "
+      "(STEP .step/.stp, IGES .igs/.iges)",
+      [this] {
+        dialogs_.browse(FileDialogs::Purpose::Export, browse_start_dir(),
+                        session_.doc().path().stem().string() + ".obj");
+      });
   exporting.separator_before = true;
   exporting.enabled = [this] { return views_.ready(); };
   r.add(std::move(exporting));
@@ -130,6 +130,7 @@ void Editor::register_actions() {
   };
   r.add(std::move(vertex_here));
   add_authoring_actions(r, session_.doc(), selection_, hooks);
+  add_patch_actions(r, session_.doc(), selection_, say);
   Action rename = make_action("edit.rename", "Edit", "Rename...", {"F2"},
                               "name the selected face or edge", [this] { start_rename(); });
   rename.context = context_bit(ContextTarget::Face) | context_bit(ContextTarget::Edge);

@@ -230,7 +230,7 @@ void Editor::handle_mouse() {
     if (tools_.active().press(ctx, pointer_event(rect, &mouse_.pressed)))
       mouse_.tool_has_it = true;
     else
-      nav_.begin(ViewNavigator::Gesture::Orbit, mouse, orbit_pivot());
+      nav_.begin(ViewNavigator::Gesture::Orbit, mouse, orbit_pivot(), orbit_sample(shown_scenes()));
   } else {
     nav_.begin(ViewNavigator::Gesture::Pan, mouse, Vec3(0));
     mouse_.context_press = right;

@@ -4,6 +4,7 @@
 
 #include <cstring>
 #include <system_error>
+#include <utility>
 
 namespace pl {
 
@@ -19,6 +20,7 @@ void FileBrowser::open(const std::string& title, const std::string& action, fs::
   default_extension_ = std::move(default_extension);
   std::snprintf(name_, sizeof name_, "%s", name.c_str());
   selected_ = -1;
+  problem_.clear();
   open_request_ = true;
   refresh();
 }
@@ -57,7 +59,7 @@ std::optional<fs::path> FileBrowser::draw() {
     filter += '*';
     filter += e;
   }
-  const float footer = ImGui::GetFrameHeightWithSpacing() * 2.2f;
+  const float footer = ImGui::GetFrameHeightWithSpacing() * (problem_.empty() ? 2.2f : 3.2f);
   ImGui::BeginChild("listing", ImVec2(0, -footer), true);
   if (!listing_.error.empty())
     ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", listing_.error.c_str());
@@ -81,27 +83,37 @@ std::optional<fs::path> FileBrowser::draw() {
     selected_ = -1;
     refresh();
   }
-  ImGui::SetNextItemWidth(-ImGui::CalcTextSize(action_.c_str()).x * 2 - 120);
-  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();  // type a name straight away
+  // Sizes follow the font, so the dialog reads the same at every UI scale.
+  const float button = ImGui::GetFontSize() * 8;
+  ImGui::SetNextItemWidth(-ImGui::CalcTextSize(filter.c_str()).x -
+                          ImGui::GetStyle().ItemSpacing.x * 2);
+  // Type a name straight away, and again after a refused name or a folder typed into the field
+  // (Enter left the field).
+  if (ImGui::IsWindowAppearing() || std::exchange(refocus_, false)) ImGui::SetKeyboardFocusHere();
   const bool typed_enter = ImGui::InputTextWithHint("##name", "file name", name_, sizeof name_,
                                                     ImGuiInputTextFlags_EnterReturnsTrue);
   ImGui::SameLine();
   ImGui::TextDisabled("%s", filter.c_str());
-  if ((ImGui::Button(action_.c_str(), ImVec2(110, 0)) || typed_enter) && name_[0] != '\0') {
+  if ((ImGui::Button(action_.c_str(), ImVec2(button, 0)) || typed_enter) && name_[0] != '\0') {
     const fs::path p = resolve_typed_name(dir_, name_, default_extension_);
     std::error_code ec;
     if (fs::is_directory(p, ec)) {
       dir_ = p;
       name_[0] = '\0';
       refresh();
-    } else {
+      refocus_ = true;
+    } else if (problem_ = extension_problem(p, extensions_); problem_.empty()) {
       chosen = p;
+    } else {
+      refocus_ = true;
     }
   }
   ImGui::SameLine();
-  if (ImGui::Button("Cancel", ImVec2(110, 0)) ||
+  if (ImGui::Button("Cancel", ImVec2(button, 0)) ||
       ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape)))
     ImGui::CloseCurrentPopup();
+  // A refused name stays in the field to be corrected; the reason is said below it.
+  if (!problem_.empty()) ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.5f, 1), "%s", problem_.c_str());
   if (chosen) ImGui::CloseCurrentPopup();
   ImGui::EndPopup();
   return chosen;

@@ -29,6 +29,8 @@ class FileBrowser {
   std::vector<std::string> extensions_;
   DirListing listing_;
   char name_[512] = {};
+  std::string problem_;   // why the typed name was refused, shown until the next try
+  bool refocus_ = false;  // the name field takes the keys again on the next frame
   bool open_request_ = false;
   int selected_ = -1;
 };

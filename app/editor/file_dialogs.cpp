@@ -16,15 +16,34 @@ void FileDialogs::browse(Purpose purpose, const std::filesystem::path& dir,
       browser_.open("Open scene", "Open", dir, {".json", ".gbp"}, "");
       break;
     case Purpose::SaveAs:
-      browser_.open("Save scene as", "Save", dir, {".json"}, ".json", name);
+      // The types Open lists; a .gbp holds a single GB patch (a scene that is one is saved back).
+      browser_.open("Save scene as", "Save", dir, {".json", ".gbp"}, ".json", name);
       break;
-    case Purpose::ExportMesh:
-      browser_.open("Export mesh", "Export", dir, {".obj", ".ply", ".off", ".stl"}, ".obj", name);
+    case Purpose::Export:
+      browser_.open("Export", "Export", dir,
+                    {".obj", ".ply", ".off", ".stl", ".step", ".stp", ".igs", ".iges"}, ".obj",
+                    name);
       break;
     case Purpose::Screenshot:
       browser_.open("Save screenshot", "Save", dir, {".png"}, ".png", name);
       break;
   }
+}
+
+void FileDialogs::browse_save_as() {
+  auto [dir, name] = handlers_.save_as_start();
+  browse(Purpose::SaveAs, dir, name);
+}
+
+void FileDialogs::show_report(const std::string& title, const std::string& text) {
+  report_title_ = title;
+  report_text_ = text;
+  report_request_ = true;
+}
+
+void FileDialogs::offer_recovery(RecoveryOffer offer) {
+  recovery_ = std::move(offer);
+  recovery_request_ = true;
 }
 
 void FileDialogs::show_error(const std::string& title, const std::string& message) {
@@ -64,8 +83,8 @@ void FileDialogs::draw(Preferences& prefs, float s, bool compare, const std::str
         handlers_.save_as(*chosen);
         saved();
         break;
-      case Purpose::ExportMesh:
-        handlers_.export_mesh(*chosen);
+      case Purpose::Export:
+        handlers_.export_file(*chosen);
         break;
       case Purpose::Screenshot:
         handlers_.screenshot(*chosen);
@@ -114,6 +133,65 @@ void FileDialogs::draw(Preferences& prefs, float s, bool compare, const std::str
     ImGui::EndPopup();
   }
 
+  if (report_request_) {
+    ImGui::OpenPopup("Report###report");
+    report_request_ = false;
+  }
+  if (ImGui::BeginPopupModal("Report###report", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::TextUnformatted(report_title_.c_str());
+    // As wide as its longest line when the window allows (else it scrolls), as tall as its
+    // lines up to 60 % of the window.
+    const ImVec2 text = ImGui::CalcTextSize(report_text_.c_str());
+    const ImVec2 most = ImGui::GetMainViewport()->Size;
+    const ImGuiStyle& st = ImGui::GetStyle();
+    const ImVec2 size(std::min(text.x + 2 * st.WindowPadding.x + st.ScrollbarSize, most.x * 0.85f),
+                      std::min(text.y + 2 * st.WindowPadding.y + st.ScrollbarSize, most.y * 0.6f));
+    ImGui::BeginChild("##report", size, true, ImGuiWindowFlags_HorizontalScrollbar);
+    ImGui::TextUnformatted(report_text_.c_str());
+    ImGui::EndChild();
+    const bool keys = !ImGui::IsWindowAppearing();
+    if (ImGui::Button("OK", ImVec2(120 * s, 0)) ||
+        (keys && (ImGui::IsKeyPressed(GLFW_KEY_ENTER) || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE))))
+      ImGui::CloseCurrentPopup();
+    ImGui::SameLine();
+    if (ImGui::Button("Copy", ImVec2(120 * s, 0))) ImGui::SetClipboardText(report_text_.c_str());
+    ImGui::EndPopup();
+  }
+
+  if (recovery_request_) {
+    ImGui::OpenPopup("Recover unsaved work###recover");
+    recovery_request_ = false;
+  }
+  if (recovery_ && ImGui::BeginPopupModal("Recover unsaved work###recover", nullptr,
+                                          ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("PatchLab stopped before these changes were saved:");
+    ImGui::BulletText("%s",
+                      recovery_->document.empty() ? "a new scene" : recovery_->document.c_str());
+    ImGui::BulletText("last autosaved %s", recovery_->when.c_str());
+    ImGui::TextDisabled("Recover opens them as unsaved changes; Discard deletes them.");
+    const ImVec2 b(120 * s, 0);
+    const bool keys = !ImGui::IsWindowAppearing();
+    std::function<void()> run;
+    bool closed = false;
+    if (ImGui::Button("Recover", b) || (keys && ImGui::IsKeyPressed(GLFW_KEY_ENTER))) {
+      run = recovery_->recover;
+      closed = true;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard", b)) {
+      run = recovery_->discard;
+      closed = true;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Later", b) || (keys && ImGui::IsKeyPressed(GLFW_KEY_ESCAPE))) closed = true;
+    if (closed) {
+      ImGui::CloseCurrentPopup();
+      recovery_.reset();
+    }
+    ImGui::EndPopup();
+    if (run) run();
+  }
+
   if (confirm_request_) {
     ImGui::OpenPopup("Unsaved changes###confirm");
     confirm_request_ = false;
@@ -129,7 +207,7 @@ void FileDialogs::draw(Preferences& prefs, float s, bool compare, const std::str
       } else {
         // Untitled: the action waits for the Save As to succeed.
         after_save_ = confirm_action_;
-        browse(Purpose::SaveAs, handlers_.start_dir(), "");
+        browse_save_as();
       }
     }
     ImGui::SameLine();

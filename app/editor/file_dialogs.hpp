@@ -1,12 +1,15 @@
-// The editor's dialogs around files: the in-app browser (open, save as, export mesh,
-// screenshot), the error message, the unsaved-changes question and the screenshot options.
+// The editor's dialogs around files: the in-app browser (open, save as, export a mesh or a CAD
+// file, screenshot), the error message, a report (what a CAD export wrote), the unsaved-changes
+// question, the crash-recovery offer and the screenshot options.
 // What a chosen file means is the editor's (the handlers); this part owns only the dialogs'
 // state. ImGui code.
 #pragma once
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "app/editor/file_browser.hpp"
 #include "app/editor/logic/preferences.hpp"
@@ -15,20 +18,35 @@ namespace pl {
 
 class FileDialogs {
  public:
-  enum class Purpose { Open, SaveAs, ExportMesh, Screenshot };
+  enum class Purpose { Open, SaveAs, Export, Screenshot };
   struct Handlers {
-    std::function<void(const std::filesystem::path&)> open, save_as, export_mesh, screenshot;
-    // Saves to the document's file; returns false when it has none (then Save As is asked).
+    // export_file: a mesh (.obj .ply .off .stl) or CAD file (.step .stp .igs .iges).
+    std::function<void(const std::filesystem::path&)> open, save_as, export_file, screenshot;
+    // Saves to the document's file; returns false when it cannot (untitled, or its type cannot
+    // hold the scene): then Save As is asked.
     std::function<bool()> save;
     std::function<bool()> dirty;
     std::function<std::filesystem::path()> start_dir;  // where the browser opens
+    // Where Save As opens and the name typed in.
+    std::function<std::pair<std::filesystem::path, std::string>()> save_as_start;
   };
 
   explicit FileDialogs(Handlers handlers) : handlers_(std::move(handlers)) {}
 
   // Opens the browser for `purpose` in `dir`, with `name` typed in.
   void browse(Purpose purpose, const std::filesystem::path& dir, const std::string& name = "");
+  void browse_save_as();  // at save_as_start()
   void show_error(const std::string& title, const std::string& message);
+  // A message to read (and copy) in a scrolling box: what an export wrote.
+  void show_report(const std::string& title, const std::string& text);
+  // At start: the editor's autosave of unsaved work from `when` (an edit of `document`, or of a
+  // new scene when empty) was left by a crash. Recover loads it, Discard deletes it; Later keeps
+  // it for the next start.
+  struct RecoveryOffer {
+    std::string document, when;
+    std::function<void()> recover, discard;
+  };
+  void offer_recovery(RecoveryOffer offer);
   // Runs `action` now when there are no unsaved changes, else asks: Save (then the action, also
   // after a Save As), Discard (the action), or Cancel.
   void confirm_discard(const std::string& what, std::function<void()> action);
@@ -46,6 +64,10 @@ class FileDialogs {
   Purpose purpose_ = Purpose::Open;
   std::string error_title_, error_message_;
   bool error_request_ = false;
+  std::string report_title_, report_text_;
+  bool report_request_ = false;
+  std::optional<RecoveryOffer> recovery_;
+  bool recovery_request_ = false;
   std::string confirm_what_;
   std::function<void()> confirm_action_, after_save_;
   bool confirm_request_ = false;

@@ -73,18 +73,24 @@ float GlWindow::content_scale() const {
 }
 
 void GlWindow::apply_ui_scale(float scale) {
-  ImGuiIO& io = ImGui::GetIO();
-  io.Fonts->Clear();
-  ImFontConfig config;
-  config.SizePixels = 13.0f * scale;
-  config.OversampleH = config.OversampleV = 1;
-  config.PixelSnapH = true;
-  io.Fonts->AddFontDefault(&config);
+  int fw = 0, fh = 0, ww = 0, wh = 0;
+  glfwGetFramebufferSize(window_, &fw, &fh);
+  glfwGetWindowSize(window_, &ww, &wh);
+  load_ui_font(scale, ww > 0 && fw > 0 ? float(fw) / float(ww) : 1.0f);
+  ui_scale_ = scale;
   ImGui_ImplOpenGL3_DestroyFontsTexture();
   ImGui_ImplOpenGL3_CreateFontsTexture();
   ImGui::GetStyle() = ImGuiStyle();
   apply_theme();
   ImGui::GetStyle().ScaleAllSizes(scale);
+}
+
+float GlWindow::follow_ui_scale(double preference) {
+  // Moved to a monitor with another content scale (or the preference changed): new fonts and
+  // sizes, between two frames.
+  const float want = preference > 0 ? float(preference) : content_scale();
+  if (want != ui_scale_) apply_ui_scale(want);
+  return ui_scale_;
 }
 
 void GlWindow::begin_frame() {

@@ -26,8 +26,11 @@ class GlWindow {
   void set_title(const std::string& title);
   // The monitor's content scale (1 on a standard display, 2 on HiDPI).
   float content_scale() const;
-  // Applies a UI scale: fonts and widget sizes.
+  // Applies a UI scale: fonts (the embedded TrueType face) and widget sizes.
   void apply_ui_scale(float scale);
+  // Applies `preference` (> 0), or else the monitor's content scale, when it differs from the
+  // scale applied; returns the scale in use. Call before begin_frame().
+  float follow_ui_scale(double preference);
 
   void begin_frame();  // polls events, starts an ImGui frame
   void end_frame();    // renders ImGui over whatever was drawn and swaps
@@ -36,6 +39,7 @@ class GlWindow {
   GLFWwindow* window_ = nullptr;
   std::string ini_file_;  // kept alive: ImGui stores the pointer
   bool imgui_ready_ = false;
+  float ui_scale_ = 0;  // applied
 };
 
 }  // namespace pl

@@ -52,6 +52,7 @@ class SceneViews {
   const GpuScene* difference_scene(uint64_t revision);
   double difference_range() const { return field_.range(); }
   double difference_max() const { return field_.max_abs(); }
+  const DifferenceField& difference_field() const { return field_; }  // the probe reads it
 
  private:
   std::unique_ptr<EvaluatedView> main_;

@@ -40,5 +40,8 @@ bool draw_display_section(const SidePanel& p);
 void draw_work_plane_section(const SidePanel& p);
 void draw_comparison_section(const SidePanel& p);
 void draw_continuity_section(const SidePanel& p);
+// Brings the Continuity figures up to the document once the views shown have settled: the
+// scene's own filling, or the comparison's two (continuity_panel.cpp).
+void follow_continuity(ContinuityMonitor& monitor, const SceneViews& views, const Document& doc);
 
 }  // namespace pl

@@ -6,8 +6,9 @@
 #include <cmath>
 #include <unordered_set>
 
+#include "app/editor/logic/editor_layout.hpp"
 #include "app/editor/theme.hpp"
-#include "render/legend.hpp"
+#include "render/palette.hpp"
 
 namespace pl {
 
@@ -37,14 +38,18 @@ void draw_point_overlays(const OverlayFrame& o) {
   const float s = o.ui_scale;
   const DisplaySettings& d = o.prefs.display;
 
-  // The edge with the largest normal angle in the Continuity panel.
+  // The worst edge of this panel's filling, when it is over the user's warning threshold: a
+  // warning, so drawn with the curves hidden too, outlined dark to stand out on light surfaces.
   const auto& curves = o.live.draw().network_curves;
-  const int worst = o.continuity ? o.continuity->worst_edge() : -1;
-  if (worst >= 0 && worst < int(curves.size()) && d.network_curves) {
+  const int worst =
+      o.continuity ? o.continuity->warned_edge(o.panel, o.prefs.continuity_threshold_deg) : -1;
+  if (worst >= 0 && worst < int(curves.size())) {
     std::vector<ImVec2> line;
     for (const Vec3& p : curves[worst])
       if (const auto q = screen(p)) line.push_back(im(*q));
-    dl->AddPolyline(line.data(), int(line.size()), rgba(0.93f, 0.22f, 0.25f, 0.9f), 0, 4.0f * s);
+    const Rgb h = palette::kHighlight;
+    dl->AddPolyline(line.data(), int(line.size()), rgba(0.1f, 0.1f, 0.1f, 0.85f), 0, 6.5f * s);
+    dl->AddPolyline(line.data(), int(line.size()), rgba(h[0], h[1], h[2]), 0, 4.0f * s);
   }
 
   const ScenePoints& pts = o.live.points();
@@ -85,10 +90,11 @@ void draw_panel_label(const OverlayFrame& o, int panel, bool difference, const V
   const float s = o.ui_scale;
   const ImVec2 lo(float(o.rect.x), float(o.rect.y)),
       hi(float(o.rect.x + o.rect.width), float(o.rect.y + o.rect.height));
-  const char* label = panel == 0   ? "Gregory"
-                      : difference ? "Generalized Bezier (coloured by distance to Gregory)"
-                                   : "Generalized Bezier";
-  dl->AddText(ImVec2(lo.x + 12 * s, lo.y + 10 * s), rgba(0.12f, 0.13f, 0.16f), label);
+  // The longest title that fits the panel: narrow windows get the short ones, never a cut one.
+  const std::string label =
+      compare_panel_title(panel, difference, o.rect.width - 24 * s,
+                          [](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x; });
+  dl->AddText(ImVec2(lo.x + 12 * s, lo.y + 10 * s), rgba(0.12f, 0.13f, 0.16f), label.c_str());
   if (o.rect.x > whole.x)
     dl->AddLine(ImVec2(lo.x, lo.y), ImVec2(lo.x, hi.y), rgba(0.1f, 0.1f, 0.12f), 2 * s);
 }
@@ -108,35 +114,6 @@ void draw_axis_triad(const OverlayFrame& o) {
     dl->AddLine(origin, e, colors[a], 2.0f * s);
     dl->AddText(ImVec2(e.x + 2 * s, e.y - 7 * s), colors[a], names[a]);
   }
-}
-
-void draw_legend(const ViewRect& rect, const ColorRange& range, const std::string& title, float s) {
-  ImDrawList* dl = ImGui::GetBackgroundDrawList();
-  const float bar_w = 16 * s, bar_h = float(std::min(rect.height * 0.5, 320.0 * s));
-  const float x1 = float(rect.x + rect.width) - 70 * s, x0 = x1 - bar_w;
-  const float y0 = float(rect.y + rect.height * 0.5) - bar_h / 2, y1 = y0 + bar_h;
-  dl->AddRectFilled(ImVec2(x0 - 12 * s, y0 - 30 * s), ImVec2(x1 + 64 * s, y1 + 12 * s),
-                    rgba(1, 1, 1, 0.72f), 4 * s);
-  constexpr int kSteps = 64;
-  for (int i = 0; i < kSteps; ++i) {
-    // Top is hi: t runs from 1 at the top to 0 at the bottom.
-    const double t0 = 1 - double(i) / kSteps, t1 = 1 - double(i + 1) / kSteps;
-    const Rgb a = color_map(t0), b = color_map(t1);
-    dl->AddRectFilledMultiColor(ImVec2(x0, y0 + bar_h * i / kSteps),
-                                ImVec2(x1, y0 + bar_h * (i + 1) / kSteps), rgba(a[0], a[1], a[2]),
-                                rgba(a[0], a[1], a[2]), rgba(b[0], b[1], b[2]),
-                                rgba(b[0], b[1], b[2]));
-  }
-  dl->AddRect(ImVec2(x0, y0), ImVec2(x1, y1), rgba(0.2f, 0.2f, 0.22f), 0, 0, 1.0f);
-  const ImU32 ink = rgba(0.12f, 0.13f, 0.16f);
-  const double ticks[5] = {range.hi, range.hi / 2, 0, range.lo / 2, range.lo};
-  for (int i = 0; i < 5; ++i) {
-    const float y = y0 + bar_h * i / 4;
-    dl->AddLine(ImVec2(x1, y), ImVec2(x1 + 4 * s, y), ink, 1.0f);
-    dl->AddText(ImVec2(x1 + 7 * s, y - 7 * s), ink, format_tick(ticks[i]).c_str());
-  }
-  const ImVec2 ts = ImGui::CalcTextSize(title.c_str());
-  dl->AddText(ImVec2(std::min(x0 - 6 * s, x1 + 60 * s - ts.x), y0 - 24 * s), ink, title.c_str());
 }
 
 void draw_error_text(const ViewRect& r, const std::string& text) {

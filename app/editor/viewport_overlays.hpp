@@ -1,7 +1,8 @@
 // The 2D overlays over a view panel, drawn with ImGui's background list (crisp at any scale, no
 // GL programs): selected and hovered points with their tooltips, the worst continuity edge, the
-// probe's mark, the comparison's panel labels, the axis triad, the colour legend, the tools'
-// feedback and the tangent-plane discs of selected vertices.
+// probe's mark, the comparison's panel labels, the axis triad, the tools' feedback and the
+// tangent-plane discs of selected vertices (the colour legends have a column of their own:
+// editor_windows).
 #pragma once
 
 #include <optional>
@@ -27,14 +28,13 @@ struct OverlayFrame {
   const PickResult* hover;  // null unless the cursor is over this panel
   const std::optional<ProbeHit>* probe;
   float ui_scale;
+  int panel = 0;  // which view panel (the continuity figures of its filling)
 };
 
 void draw_point_overlays(const OverlayFrame& o);
 // "Gregory" / "Generalized Bezier" at the top left of a comparison panel, and the divider.
 void draw_panel_label(const OverlayFrame& o, int panel, bool difference, const ViewRect& whole);
 void draw_axis_triad(const OverlayFrame& o);
-void draw_legend(const ViewRect& rect, const ColorRange& range, const std::string& title,
-                 float ui_scale);
 void draw_error_text(const ViewRect& rect, const std::string& text);
 // The active tool's feedback (picked points and lines, the dashed rubber band, the mark where a
 // click acts) and the tangent planes of selected vertices (a disc in the plane, the normal with

@@ -217,17 +217,11 @@ void ViewportPainter::paint(const ViewportFrame& f, const ColorRange& range) {
                    f.continuity,
                    i == f.hover_panel ? f.hover : nullptr,
                    f.probe,
-                   f.ui_scale};
+                   f.ui_scale,
+                   i};
     draw_point_overlays(o);
     if (f.views->compare()) draw_panel_label(o, i, f.views->showing_difference(), f.viewport);
     draw_axis_triad(o);
-  }
-  if (f.views->showing_difference()) {
-    const double m = f.views->difference_range();
-    draw_legend(f.viewport, {-m, m}, "distance GB - Gregory", f.ui_scale);
-  } else if (f.prefs->display.base == BaseMode::Curvature) {
-    draw_legend(f.viewport, range,
-                std::string(curvature_name(f.prefs->display.curvature)) + " curvature", f.ui_scale);
   }
 }
 

@@ -1,7 +1,7 @@
 // Draws the 3D view: each panel's filling with the renderer, then over it the selection (faces
 // tinted, edges and face borders in the accent colour, depth-tested so hidden parts stay
 // hidden), the object under the cursor (a lighter tint), the work-plane grid, and the ImGui
-// overlays (selected and hovered points, tooltips, panel labels, axis triad, legend). Owns the
+// overlays (selected and hovered points, tooltips, panel labels, axis triad). Owns the
 // GPU copies of those highlight lines, re-uploaded only when the selection, the hover or the
 // document changes. Needs a current GL context and an ImGui frame.
 #pragma once

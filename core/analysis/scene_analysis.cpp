@@ -6,6 +6,7 @@
 #include <functional>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <numeric>
 
 namespace pl {
 
@@ -80,9 +81,16 @@ EdgeReport analyze_edge(const SceneSurfaces& ss, const SharedEdge& e) {
   r.faces = {a.face, b.face};
   const auto& ia = a.evaluator->tessellation().sides[e.side[0]];
   const auto& ib = b.evaluator->tessellation().sides[e.side[1]];
-  const std::size_t n = std::min(ia.size(), ib.size());
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t sa = ia[k], sb = ib[n - 1 - k];  // b runs the edge the other way
+  // Sample k of a side of density d lies at edge parameter k / d. The two faces may have
+  // different densities (the editor gives each face the density its size on screen asks for):
+  // compare them at the parameters both sample, every g-th of the coarser side's samples, g the
+  // greatest common divisor (all of them when the densities nest, as the editor's do).
+  const long da = long(ia.size()) - 1, db = long(ib.size()) - 1;
+  if (da < 1 || db < 1) return r;
+  const long g = std::gcd(da, db), n = g;  // n + 1 common parameters j / n
+  for (long j = 0; j <= n; ++j) {
+    const std::size_t sa = ia[j * (da / g)];
+    const std::size_t sb = ib[(n - j) * (db / g)];  // b runs the edge the other way
     const auto& ga = a.evaluator->geometry()[sa];
     const auto& gb = b.evaluator->geometry()[sb];
     r.max_gap =

@@ -121,11 +121,15 @@ GBPatch read_gbp(const std::filesystem::path& path) {
 
 std::string gbp_to_text(const GBPatch& patch) {
   std::string out = std::to_string(patch.sides()) + " " + std::to_string(patch.degree()) + "\n";
-  char buf[128];
-  for (const Vec3& p : patch.control_points()) {
-    std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g\n", p.x, p.y, p.z);
-    out += buf;
-  }
+  // Each coordinate in the shortest spelling that reads back as the same double: a file read
+  // and saved again keeps its "-65.3028", so a diff shows the points that were edited.
+  char buf[32];
+  for (const Vec3& p : patch.control_points())
+    for (int c = 0; c < 3; ++c) {
+      const auto end = std::to_chars(buf, buf + sizeof buf, p[c]).ptr;
+      out.append(buf, end);
+      out += c < 2 ? ' ' : '\n';
+    }
   return out;
 }
 

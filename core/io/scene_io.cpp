@@ -1,7 +1,10 @@
 #include "core/io/scene_io.hpp"
 
+#include <algorithm>
 #include <set>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "core/io/atomic_file.hpp"
 #include "core/io/curve_codec.hpp"
@@ -189,29 +192,85 @@ Scene read_scene(const std::filesystem::path& path) {
   return parse_scene(read_text_file(path), path.string());
 }
 
+namespace {
+
+// The writer's key order (docs/scene-files.md): the order of the format's description, which
+// every shipped sample follows, so a scene loaded and saved again differs from a hand-written
+// file only where it was edited. nlohmann::json keeps keys sorted; the file is built as an
+// ordered_json instead.
+using Ordered = nlohmann::ordered_json;
+
+// The keys of a patch object other than "type" and "name", which come first. A key not listed
+// (a new codec's) follows the listed ones, in alphabetical order.
+constexpr const char* kPatchKeyOrder[] = {
+    "sides", "order",   "degree",  "layers", "aux_degree", "size",     "knots_u", "knots_v", "s",
+    "t",     "domain",  "ribbons", "q",      "r",          "vertices", "faces",   "points",  "aux",
+    "data",  "weights", "lengths", "a",      "b",          "b1",       "c1",      "b2",      "c2"};
+
+int patch_key_rank(const std::string& key) {
+  int rank = 0;
+  for (const char* k : kPatchKeyOrder) {
+    if (key == k) return rank;
+    ++rank;
+  }
+  return rank;  // after every listed key; ties keep nlohmann::json's alphabetical order
+}
+
+// A codec's output in the writer's order, recursively (gap-fill and pair-join nest objects).
+Ordered ordered(const nlohmann::json& j) {
+  if (j.is_object()) {
+    std::vector<std::pair<std::string, const nlohmann::json*>> items;
+    for (auto it = j.begin(); it != j.end(); ++it) items.emplace_back(it.key(), &it.value());
+    std::stable_sort(items.begin(), items.end(), [](const auto& a, const auto& b) {
+      return patch_key_rank(a.first) < patch_key_rank(b.first);
+    });
+    Ordered o = Ordered::object();
+    for (const auto& [key, value] : items) o[key] = ordered(*value);
+    return o;
+  }
+  if (j.is_array()) {
+    Ordered a = Ordered::array();
+    for (const nlohmann::json& x : j) a.push_back(ordered(x));
+    return a;
+  }
+  return Ordered(j);
+}
+
+// A curve object in the order the format lists its keys (the samples' order).
+Ordered ordered_curve(const nlohmann::json& j) {
+  Ordered o = Ordered::object();
+  for (const char* key : {"type", "name", "degree", "points", "tangents", "knots", "weights"})
+    if (j.contains(key)) o[key] = Ordered(j.at(key));
+  return o;
+}
+
+}  // namespace
+
 std::string scene_to_json(const Scene& scene) {
-  nlohmann::json doc;
+  Ordered doc = Ordered::object();
   doc["patchlab"] = 1;
   if (!scene.name.empty()) doc["name"] = scene.name;
   if (scene.network) {
     const Network& n = *scene.network;
-    nlohmann::json net;
-    net["vertices"] = points_json(n.vertices);
+    Ordered net = Ordered::object();
+    net["vertices"] = ordered(points_json(n.vertices));
     if (!n.normals.empty()) {
-      nlohmann::json normals = nlohmann::json::array();
-      for (const auto& v : n.normals) normals.push_back(v ? point_json(*v) : nlohmann::json());
+      Ordered normals = Ordered::array();
+      for (const auto& v : n.normals) normals.push_back(v ? ordered(point_json(*v)) : Ordered());
       net["normals"] = normals;
     }
-    net["edges"] = nlohmann::json::array();
+    net["edges"] = Ordered::array();
     for (const NetworkEdge& e : n.edges) {
-      nlohmann::json je{{"v", {e.v[0], e.v[1]}},
-                        {"handles", {point_json(e.handles[0]), point_json(e.handles[1])}}};
+      Ordered je = Ordered::object();
+      je["v"] = {e.v[0], e.v[1]};
+      je["handles"] = {ordered(point_json(e.handles[0])), ordered(point_json(e.handles[1]))};
       if (!e.name.empty()) je["name"] = e.name;
       net["edges"].push_back(je);
     }
-    net["faces"] = nlohmann::json::array();
+    net["faces"] = Ordered::array();
     for (const NetworkFace& f : n.faces) {
-      nlohmann::json jf{{"loop", f.loop}};
+      Ordered jf = Ordered::object();
+      jf["loop"] = f.loop;
       if (f.scheme == FaceScheme::Gregory) jf["scheme"] = "gregory";
       if (f.scheme == FaceScheme::GB) jf["scheme"] = "gb";
       if (!f.name.empty()) jf["name"] = f.name;
@@ -222,24 +281,28 @@ std::string scene_to_json(const Scene& scene) {
     doc["network"] = net;
   }
   if (!scene.patches.empty()) {
-    doc["patches"] = nlohmann::json::array();
+    doc["patches"] = Ordered::array();
     for (const ScenePatch& sp : scene.patches) {
-      nlohmann::json jp;
-      jp["type"] = sp.patch->type();
-      if (!sp.name.empty()) jp["name"] = sp.name;
       const PatchCodec* codec = find_patch_codec(sp.patch->type());
       // Every patch type registers a codec (core/io/patch_codecs.cpp); a missing one is a
       // programming error, reported rather than dereferenced.
       if (!codec) throw std::logic_error("no scene codec for patch type " + sp.patch->type());
-      codec->write(*sp.patch, jp);
+      nlohmann::json body;
+      codec->write(*sp.patch, body);
+      Ordered jp = Ordered::object();
+      jp["type"] = sp.patch->type();
+      if (!sp.name.empty()) jp["name"] = sp.name;
+      Ordered keys = ordered(body);
+      for (auto& [key, value] : keys.items()) jp[key] = std::move(value);
       doc["patches"].push_back(jp);
     }
   }
   if (!scene.curves.empty()) {
-    doc["curves"] = nlohmann::json::array();
-    for (const SceneCurve& c : scene.curves) doc["curves"].push_back(curve_json(c));
+    doc["curves"] = Ordered::array();
+    for (const SceneCurve& c : scene.curves) doc["curves"].push_back(ordered_curve(curve_json(c)));
   }
-  if (!scene.view_json.empty()) doc["view"] = nlohmann::json::parse(scene.view_json);
+  // The editor's view object as the reader kept it (its keys sorted: it is free-form).
+  if (!scene.view_json.empty()) doc["view"] = Ordered::parse(scene.view_json);
   return doc.dump(1) + "\n";
 }
 

@@ -79,6 +79,36 @@ TEST(EditorPreferences, RoundTripAndBadValuesIgnored) {
   EXPECT_EQ(bad.display.base, BaseMode::Isophotes);  // the editor starts with isophotes
 }
 
+// The isophote mode draws its lines; the other modes start without them (zebra stripes would
+// get black lines over black stripes, Shaded would look like the isophote mode), and the
+// switch in the zebra mode asks for lines over the stripes.
+TEST(EditorPreferences, IsophoteLinesFollowTheMode) {
+  DisplaySettings d = default_preferences().display;
+  EXPECT_EQ(d.base, BaseMode::Isophotes);
+  EXPECT_TRUE(isophote_switch(d) && shows_isophote_lines(d));
+  set_isophote_switch(d, false);  // the mode's own lines stay
+  EXPECT_TRUE(shows_isophote_lines(d));
+  for (BaseMode m : {BaseMode::Shaded, BaseMode::Zebra, BaseMode::Curvature}) {
+    d.base = m;
+    EXPECT_FALSE(isophote_switch(d)) << int(m);
+    EXPECT_FALSE(shows_isophote_lines(d)) << int(m);
+  }
+  d.base = BaseMode::Zebra;
+  set_isophote_switch(d, true);
+  EXPECT_TRUE(shows_isophote_lines(d));
+  Preferences p;
+  p.display = d;
+  const Preferences kept = preferences_from_text(preferences_to_text(p));
+  EXPECT_TRUE(shows_isophote_lines(kept.display));
+  set_isophote_switch(d, false);
+  EXPECT_FALSE(shows_isophote_lines(d));
+  d.base = BaseMode::Shaded;
+  set_isophote_switch(d, true);
+  EXPECT_TRUE(shows_isophote_lines(d));
+  d.base = BaseMode::Zebra;  // lines over shading do not put them over stripes
+  EXPECT_FALSE(shows_isophote_lines(d));
+}
+
 TEST(EditorPointNames, ParseWhatDescribePrints) {
   for (const PointRef& r :
        {PointRef::vertex(3), PointRef::handle(5, 1), PointRef::patch_point(0, 7)})

@@ -40,6 +40,7 @@ bool Autosave::tick(const Scene& scene, bool dirty, const std::string& document,
   if (!dir_ || !dirty) return false;
   if (last_write_ && now - *last_write_ < interval_) return false;
   last_write_ = now;  // a failing disk is retried at the same pace, not every frame
+  written_ = true;    // (even a failed write may have left a file to remove)
   try {
     std::error_code ec;
     fs::create_directories(*dir_, ec);
@@ -57,7 +58,9 @@ bool Autosave::tick(const Scene& scene, bool dirty, const std::string& document,
 
 void Autosave::discard() {
   last_write_.reset();
-  if (!dir_) return;
+  // Called every frame while the scene is clean: nothing to do unless this editor wrote.
+  if (!dir_ || !written_) return;
+  written_ = false;
   std::error_code ec;
   fs::remove(*dir_ / (stem(pid_) + ".json"), ec);
   fs::remove(*dir_ / (stem(pid_) + ".info"), ec);

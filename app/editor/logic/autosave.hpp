@@ -31,7 +31,8 @@ class Autosave {
   // whether it wrote. A failed write (disk full) is not an error for the editor: the next tick
   // tries again; last_error() says why.
   bool tick(const Scene& scene, bool dirty, const std::string& document, Clock::time_point now);
-  // The scene was saved (or is clean again): its autosave goes.
+  // The scene was saved (or is clean again): its autosave goes. Cheap when there is none, so
+  // the editor calls it every frame the scene is clean.
   void discard();
   const std::string& last_error() const { return last_error_; }
   std::optional<std::filesystem::path> file() const;  // this editor's autosave
@@ -52,6 +53,7 @@ class Autosave {
   std::chrono::milliseconds interval_;
   long pid_;
   std::optional<Clock::time_point> last_write_;
+  bool written_ = false;  // a file of this editor may exist
   std::string last_error_;
 };
 

@@ -23,4 +23,12 @@ bool DifferenceField::follow(const DrawScene& gregory, const DrawScene& gb, uint
   return true;
 }
 
+std::optional<double> DifferenceField::distance_at(const ProbeHit& probe) const {
+  if (key_ == UINT64_MAX || probe.surface < 0 ||
+      std::size_t(probe.surface) >= scene_.surfaces.size())
+    return {};
+  const SurfaceMesh& m = scene_.surfaces[probe.surface];
+  return probe_field(m, m.mean, probe);
+}
+
 }  // namespace pl

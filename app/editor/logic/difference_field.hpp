@@ -6,7 +6,9 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
+#include "app/editor/logic/surface_probe.hpp"
 #include "render/draw_scene.hpp"
 
 namespace pl {
@@ -19,6 +21,9 @@ class DifferenceField {
 
   const DrawScene& scene() const { return scene_; }
   double max_abs() const { return max_abs_; }
+  // The signed distance at a probe of the GB filling's drawn surfaces (the triangles this
+  // field was computed on), nullopt when the probe is not on them.
+  std::optional<double> distance_at(const ProbeHit& probe) const;
   // The symmetric colour range (never empty).
   double range() const { return max_abs_ > 0 ? max_abs_ : 1e-12; }
 

@@ -1,6 +1,7 @@
 #include "app/editor/logic/document_session.hpp"
 
 #include "app/cli/load_input.hpp"
+#include "app/document/scene_file.hpp"
 #include "core/base/data_error.hpp"
 
 namespace pl {
@@ -34,9 +35,7 @@ bool DocumentSession::read_only(const fs::path& path) const {
 
 void DocumentSession::open(const fs::path& file) {
   Scene scene = load_input(file);
-  const std::string ext = file.extension().string();
-  const bool is_scene = ext == ".json" || ext == ".JSON";
-  if (is_scene && !read_only(file))
+  if (scene_file_type(file) && !read_only(file))
     replace(Document(std::move(scene), file));
   else
     replace(Document(std::move(scene)), file.filename().string());
@@ -57,16 +56,31 @@ void DocumentSession::replace(Document doc, std::string origin) {
 
 bool DocumentSession::save() {
   if (untitled()) return false;
+  if (scene_file_type(doc_.path()) == SceneFileType::Gbp && !fits_gbp(doc_.scene())) return false;
   save_as(doc_.path());
   return true;
 }
 
-void DocumentSession::save_as(const fs::path& path) {
+fs::path DocumentSession::save_as(const fs::path& typed) {
+  fs::path path = typed;
+  if (!path.has_extension()) path += ".json";
   if (read_only(path))
     throw DataError(path.string(), "",
                     "this folder holds the scenes shipped with PatchLab; save a copy elsewhere");
-  doc_.save_as(path);
+  doc_.save_as(path);  // refuses an unknown extension (save_scene_file)
   origin_.clear();
+  return path;
+}
+
+DocumentSession::Suggestion DocumentSession::save_as_suggestion() const {
+  Suggestion s;
+  fs::path name = untitled() ? fs::path(origin_) : doc_.path().filename();
+  if (!untitled()) s.dir = doc_.path().parent_path();
+  const auto type = scene_file_type(name);
+  if (!name.empty() && (!type || (*type == SceneFileType::Gbp && !fits_gbp(doc_.scene()))))
+    name.replace_extension(".json");
+  s.name = name.string();
+  return s;
 }
 
 std::string DocumentSession::title() const {

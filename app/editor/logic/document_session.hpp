@@ -26,8 +26,9 @@ class DocumentSession {
   Document& doc() { return doc_; }
   const Document& doc() const { return doc_; }
 
-  // A scene (.json) keeps its path unless it is a shipped sample; a .gbp is imported as an
-  // untitled scene. Throws DataError; the current document stays on failure.
+  // A scene (.json) or GB patch (.gbp) keeps its path unless it is a shipped sample (then it is
+  // an untitled copy), so Save writes a .gbp back as a .gbp. Throws DataError; the current
+  // document stays on failure.
   void open(const std::filesystem::path& file);
   // An empty scene: a network without vertices, untitled.
   void new_scene();
@@ -35,10 +36,22 @@ class DocumentSession {
   void replace(Document doc, std::string origin = "");
 
   // Writes the document to its path and returns true, or returns false without writing when it
-  // has none yet (untitled): the caller asks for one and calls save_as. Throws DataError.
+  // has none yet (untitled) or its file type can no longer hold it (a .gbp scene that gained a
+  // network): the caller asks for a path (save_as_suggestion) and calls save_as. Throws
+  // DataError.
   bool save();
-  // Throws DataError, writing nothing, when `path` is in a read-only folder.
-  void save_as(const std::filesystem::path& path);
+  // Writes the document to `path` and makes that its file; returns the path written. A name
+  // without an extension gets ".json"; any extension but .json and .gbp (scene_file.hpp) is
+  // refused, as is a read-only folder: DataError, nothing written.
+  std::filesystem::path save_as(const std::filesystem::path& path);
+
+  // Where Save As starts: the document's folder (empty when untitled: the caller chooses) and
+  // a name, the document's own or its origin's, with ".json" when its type cannot hold it.
+  struct Suggestion {
+    std::filesystem::path dir;
+    std::string name;
+  };
+  Suggestion save_as_suggestion() const;
 
   bool read_only(const std::filesystem::path& path) const;
   bool untitled() const { return doc_.path().empty(); }

@@ -57,4 +57,25 @@ fs::path resolve_typed_name(const fs::path& dir, const std::string& name,
   return p.lexically_normal();
 }
 
+std::string extension_problem(const fs::path& file, const std::vector<std::string>& extensions) {
+  if (extensions.empty() || has_extension(file, extensions)) return "";
+  std::string r = "\"";
+  r += file.filename().string();
+  r += "\": ";
+  const std::string ext = file.extension().string();
+  if (ext.empty()) {
+    r += "no file type";
+  } else {
+    r += "\"";
+    r += ext;
+    r += "\" is not a known type";
+  }
+  r += "; use ";
+  for (std::size_t i = 0; i < extensions.size(); ++i) {
+    if (i > 0) r += i + 1 == extensions.size() ? " or " : ", ";
+    r += extensions[i];
+  }
+  return r;
+}
+
 }  // namespace pl

@@ -30,4 +30,10 @@ bool has_extension(const std::filesystem::path& file, const std::vector<std::str
 std::filesystem::path resolve_typed_name(const std::filesystem::path& dir, const std::string& name,
                                          const std::string& default_extension);
 
+// Why the browser does not accept `file` (a resolved typed name): its extension is not one of
+// `extensions` ("part.jsonn" in Save As: a file Open would never list). Empty when accepted or
+// when any extension is (no extensions given).
+std::string extension_problem(const std::filesystem::path& file,
+                              const std::vector<std::string>& extensions);
+
 }  // namespace pl

@@ -49,11 +49,27 @@ std::string trim(const std::string& s) {
 Preferences default_preferences() {
   Preferences p;
   p.display.base = BaseMode::Isophotes;
-  p.display.isophote_lines = true;
   p.display.control_net = true;
   p.display.network_curves = true;
   p.display.borders = true;
   return p;
+}
+
+bool isophote_switch(const DisplaySettings& d) {
+  return shows_isophote_lines(d);
+}
+
+void set_isophote_switch(DisplaySettings& d, bool on) {
+  switch (d.base) {
+    case BaseMode::Isophotes:
+      return;  // the lines are the mode
+    case BaseMode::Zebra:
+      d.isophotes_over_zebra = on;
+      if (on) d.isophote_lines = true;
+      return;
+    default:
+      d.isophote_lines = on;
+  }
 }
 
 std::string preferences_to_text(const Preferences& p) {
@@ -64,6 +80,7 @@ std::string preferences_to_text(const Preferences& p) {
     << "base = " << base_name(d.base) << "\n"
     << "curvature = " << curvature_name(d.curvature) << "\n"
     << "isophote_lines = " << d.isophote_lines << "\n"
+    << "isophotes_over_zebra = " << d.isophotes_over_zebra << "\n"
     << "control_net = " << d.control_net << "\n"
     << "network_curves = " << d.network_curves << "\n"
     << "borders = " << d.borders << "\n"
@@ -79,6 +96,7 @@ std::string preferences_to_text(const Preferences& p) {
     << "coarse_density = " << p.coarse_density << "\n"
     << "ui_scale = " << p.ui_scale << "\n"
     << "show_probe = " << p.show_probe << "\n"
+    << "continuity_threshold_deg = " << p.continuity_threshold_deg << "\n"
     << "screenshot_width = " << p.screenshot_width << "\n"
     << "screenshot_height = " << p.screenshot_height << "\n"
     << "screenshot_transparent = " << p.screenshot_transparent << "\n"
@@ -111,6 +129,8 @@ Preferences preferences_from_text(const std::string& text) {
         if (value == curvature_name(k)) d.curvature = k;
     } else if (key == "isophote_lines") {
       flag(d.isophote_lines);
+    } else if (key == "isophotes_over_zebra") {
+      flag(d.isophotes_over_zebra);
     } else if (key == "control_net") {
       flag(d.control_net);
     } else if (key == "network_curves") {
@@ -142,6 +162,9 @@ Preferences preferences_from_text(const std::string& text) {
       p.ui_scale = x;
     } else if (key == "show_probe") {
       flag(p.show_probe);
+    } else if (key == "continuity_threshold_deg" && parse_double(value, x) &&
+               x >= kMinContinuityThresholdDeg && x <= kMaxContinuityThresholdDeg) {
+      p.continuity_threshold_deg = x;
     } else if (key == "screenshot_width" && parse_int(value, i, 16, 8192)) {
       p.screenshot_width = i;
     } else if (key == "screenshot_height" && parse_int(value, i, 16, 8192)) {
@@ -152,7 +175,6 @@ Preferences preferences_from_text(const std::string& text) {
       p.last_directory = value;
     }
   }
-  if (d.base == BaseMode::Isophotes) d.isophote_lines = true;
   return p;
 }
 

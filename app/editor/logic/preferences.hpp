@@ -16,6 +16,8 @@ struct Preferences {
   int coarse_density = 16;  // while dragging
   double ui_scale = 0;      // 0: from the monitor's content scale
   bool show_probe = true;
+  // The Continuity panel warns only about edges whose normal angle exceeds this (degrees).
+  double continuity_threshold_deg = 0.1;
   int screenshot_width = 1920, screenshot_height = 1080;
   bool screenshot_transparent = false;
   std::string last_directory;
@@ -24,13 +26,22 @@ struct Preferences {
 // The ranges of the comb controls (Display panel sliders, accepted preference values).
 inline constexpr double kMinCombScale = 0.05, kMaxCombScale = 20.0;
 inline constexpr int kMinCombTeeth = 2, kMaxCombTeeth = 200;
+// The continuity warning threshold accepted from the panel or the file (degrees).
+inline constexpr double kMinContinuityThresholdDeg = 1e-6, kMaxContinuityThresholdDeg = 90.0;
 
-Preferences default_preferences();  // isophotes on, control net and curves shown
+// The isophote mode with the control net, curves and borders shown; no isophote lines over
+// the other modes (Shaded reads as shading, zebra stripes as reflections).
+Preferences default_preferences();
 std::string preferences_to_text(const Preferences& p);
 Preferences preferences_from_text(const std::string& text);
 
 // Missing or unreadable file: the defaults.
 Preferences load_preferences(const std::filesystem::path& file);
+// The Display panel's "Isophote lines" switch for the mode shown: what is drawn (always on in the
+// isophote mode, where the lines are the mode; over zebra stripes only when asked for there).
+bool isophote_switch(const DisplaySettings& d);
+void set_isophote_switch(DisplaySettings& d, bool on);
+
 // Atomic; returns false (and keeps the old file) on failure.
 bool save_preferences(const std::filesystem::path& file, const Preferences& p);
 

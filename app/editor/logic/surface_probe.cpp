@@ -13,6 +13,9 @@ ProbeHit probe_at(const SurfaceMesh& mesh, int surface, const TriangleHit& hit, 
   ProbeHit h;
   h.surface = surface;
   h.distance = hit.t;
+  h.triangle = static_cast<int>(hit.triangle);
+  h.b1 = u;
+  h.b2 = v;
   h.position = ray.origin + hit.t * ray.direction;
   const Vec3 n = w * mesh.normals[tri[0]] + u * mesh.normals[tri[1]] + v * mesh.normals[tri[2]];
   h.normal = glm::length(n) > 0 ? glm::normalize(n) : n;
@@ -21,6 +24,16 @@ ProbeHit probe_at(const SurfaceMesh& mesh, int surface, const TriangleHit& hit, 
   h.gaussian = mix(mesh.gaussian);
   h.mean = mix(mesh.mean);
   return h;
+}
+
+std::optional<double> probe_field(const SurfaceMesh& mesh, const std::vector<double>& field,
+                                  const ProbeHit& probe) {
+  if (probe.triangle < 0 || std::size_t(probe.triangle) >= mesh.triangles.size()) return {};
+  const auto& tri = mesh.triangles[probe.triangle];
+  for (auto i : tri)
+    if (std::size_t(i) >= field.size()) return {};
+  return (1 - probe.b1 - probe.b2) * field[tri[0]] + probe.b1 * field[tri[1]] +
+         probe.b2 * field[tri[2]];
 }
 
 std::optional<ProbeHit> probe_surfaces(std::span<const SurfaceMesh> meshes, const Ray& ray) {

@@ -2,13 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+
+#include "render/default_view.hpp"
 
 namespace pl {
 
 void ViewNavigator::frame(const Box& box, double aspect) {
   if (box.empty()) return;
   camera_.frame(box, aspect);
-  framed_ = true;
+  mark_framed();
 }
 
 void ViewNavigator::frame_closely(const Box& box, double aspect) {
@@ -20,18 +23,45 @@ void ViewNavigator::frame_closely(const Box& box, double aspect) {
   grown.add(box.centre() - Vec3(r));
   camera_.frame(grown, aspect);
   camera_.scene_radius = std::max(keep_radius, camera_.scene_radius);
-  framed_ = true;
+  mark_framed();
 }
 
 void ViewNavigator::preset(ViewPreset p, const Box& scene, double aspect) {
   if (scene.empty()) return;
   camera_ = preset_camera(p, scene, aspect, camera_.orthographic);
-  framed_ = true;
+  mark_framed();
 }
 
-void ViewNavigator::begin(Gesture g, const Vec2& pixel, const Vec3& pivot) {
+void ViewNavigator::open_view(std::span<const DrawScene* const> scenes, double aspect) {
+  const bool ortho = camera_.orthographic;
+  if (framing_points(scenes).empty())
+    camera_ = preset_camera(ViewPreset::Iso, Box{Vec3(-1), Vec3(1)}, aspect, ortho);
+  else
+    camera_ = default_camera(scenes, aspect);
+  camera_.orthographic = ortho;
+  mark_framed();
+}
+
+void ViewNavigator::frame_tightly(std::span<const DrawScene* const> scenes, double aspect) {
+  const std::vector<Vec3> points = framing_points(scenes);
+  if (points.empty()) return;
+  camera_.frame_points(points, aspect);
+  mark_framed();
+}
+
+void ViewNavigator::follow_panel(const Vec2& window, bool compare, double width) {
+  const PanelShape was = std::exchange(panel_, PanelShape{window, compare, width});
+  if (was.window == window && was.compare == compare && was.width > 0 && width > 0 &&
+      was.width != width)
+    camera_.zoom(width / was.width);
+}
+
+void ViewNavigator::begin(Gesture g, const Vec2& pixel, const Vec3& pivot,
+                          std::vector<Vec3> model) {
   gesture_ = g;
   pivot_ = pivot;
+  model_ = std::move(model);
+  start_.reset();
   press_ = last_ = pixel;
   travel_ = 0;
 }
@@ -42,9 +72,12 @@ void ViewNavigator::move(const Vec2& pixel, const ViewRect& rect) {
   last_ = pixel;
   travel_ = std::max(travel_, glm::length(pixel - press_));
   if (d == Vec2(0)) return;
-  if (gesture_ == Gesture::Orbit)
+  if (gesture_ == Gesture::Orbit) {
+    // Where the model was when the orbit began: it never gets further out of place than that.
+    if (!start_) start_ = screen_box(camera_, rect, model_);
     orbit_about(camera_, pivot_, -d.x * kOrbitRadiansPerPixel, d.y * kOrbitRadiansPerPixel);
-  else
+    keep_in_view(camera_, rect, model_, *start_);
+  } else
     pan_pixels(camera_, rect, d.x, d.y);
 }
 
@@ -56,6 +89,31 @@ bool ViewNavigator::end() {
 
 void ViewNavigator::wheel(const ViewRect& rect, const Vec2& pixel, double notches) {
   if (notches != 0) zoom_at(camera_, rect, pixel, std::pow(kWheelZoom, notches));
+}
+
+std::vector<Vec3> orbit_sample(std::span<const DrawScene* const> scenes, std::size_t most) {
+  std::size_t total = 0;
+  for (const DrawScene* s : scenes) {
+    for (const SurfaceMesh& m : s->surfaces) total += m.positions.size();
+    total += s->net.points.size();
+    for (const auto& c : s->network_curves) total += c.size();
+  }
+  const std::size_t stride =
+      std::max<std::size_t>(1, (total + most - 1) / std::max<std::size_t>(most, 1));
+  std::vector<Vec3> out;
+  out.reserve(total / stride + 1);
+  std::size_t i = 0;
+  auto take = [&](const Vec3& p) {
+    if (i++ % stride == 0) out.push_back(p);
+  };
+  for (const DrawScene* s : scenes) {
+    for (const SurfaceMesh& m : s->surfaces)
+      for (const Vec3& p : m.positions) take(p);
+    for (const Vec3& p : s->net.points) take(p);
+    for (const auto& c : s->network_curves)
+      for (const Vec3& p : c) take(p);
+  }
+  return out;
 }
 
 }  // namespace pl

@@ -5,7 +5,12 @@
 // opens the context menu for the right button). GUI-free and unit-tested.
 #pragma once
 
+#include <optional>
+#include <span>
+#include <vector>
+
 #include "app/editor/logic/camera_control.hpp"
+#include "render/draw_scene.hpp"
 
 namespace pl {
 
@@ -26,9 +31,25 @@ class ViewNavigator {
   void frame_closely(const Box& box, double aspect);
   // A preset direction framing `scene`; keeps orthographic or perspective.
   void preset(ViewPreset preset, const Box& scene, double aspect);
+  // The view a document opens with: default_camera of the scenes drawn side by side, which
+  // faces a single patch's front (a .gbp seen from behind would show its back) and frames what
+  // is drawn tightly at this panel aspect, so each half of the comparison is filled. With
+  // nothing drawn (a new scene): the iso view of the cube [-1, 1]^3, where new points go.
+  void open_view(std::span<const DrawScene* const> scenes, double aspect);
+  // Frames what the scenes draw tightly (Camera::frame_points) from the current direction.
+  void frame_tightly(std::span<const DrawScene* const> scenes, double aspect);
 
-  // Gestures: begin at the press, move with every cursor position, end at the release.
-  void begin(Gesture gesture, const Vec2& pixel, const Vec3& pivot);
+  // Called every frame with the window size, whether the comparison is shown and the width of
+  // the first panel. When the panel width changed while the window and the split did not (the
+  // legend column came or went), zooms so the panel keeps showing the same width of the world:
+  // a model framed across it is not cut by the new column, and comes back to its size when the
+  // column goes. A window resize keeps the vertical extent, as every view does.
+  void follow_panel(const Vec2& window, bool compare, double width);
+
+  // Gestures: begin at the press, move with every cursor position, end at the release. An
+  // orbit keeps the model (`model`: a sample of its points, orbit_sample) on screen about any
+  // pivot (keep_in_view).
+  void begin(Gesture gesture, const Vec2& pixel, const Vec3& pivot, std::vector<Vec3> model = {});
   void move(const Vec2& pixel, const ViewRect& rect);
   // Ends the gesture. True when it was a click: the cursor never went further than the slop
   // from where it was pressed.
@@ -40,12 +61,29 @@ class ViewNavigator {
   static constexpr double kWheelZoom = 1.15;  // per notch
 
  private:
+  // Framed at the panel as it is now: the next follow_panel only records its width.
+  void mark_framed() {
+    framed_ = true;
+    panel_.width = 0;
+  }
+
   Camera camera_;
   bool framed_ = false;
+  struct PanelShape {
+    Vec2 window{0.0};
+    bool compare = false;
+    double width = 0;
+  } panel_;
   Gesture gesture_ = Gesture::None;
   Vec3 pivot_{0.0};
+  std::vector<Vec3> model_;         // kept on screen while orbiting
+  std::optional<ScreenBox> start_;  // where it was on screen when the orbit began
   Vec2 press_{0.0}, last_{0.0};
   double travel_ = 0;  // furthest distance from the press
 };
+
+// At most `most` of the points the scenes draw (surface samples, net points, curve points),
+// evenly spread: what an orbit keeps on screen, cheap to project at every mouse move.
+std::vector<Vec3> orbit_sample(std::span<const DrawScene* const> scenes, std::size_t most = 4096);
 
 }  // namespace pl

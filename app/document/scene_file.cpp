@@ -1,0 +1,50 @@
+#include "app/document/scene_file.hpp"
+
+#include "core/base/data_error.hpp"
+#include "core/io/gbp_io.hpp"
+#include "core/io/scene_io.hpp"
+
+namespace pl {
+
+std::optional<SceneFileType> scene_file_type(const std::filesystem::path& file) {
+  const std::string ext = file.extension().string();
+  if (ext == ".json") return SceneFileType::Scene;
+  if (ext == ".gbp") return SceneFileType::Gbp;
+  return std::nullopt;
+}
+
+const GBPatch& single_gb_patch(const Scene& scene, const std::string& file) {
+  if (scene.network)
+    throw DataError(file, "network",
+                    "a .gbp holds exactly one gb patch; this scene has a curve network");
+  if (scene.patches.size() != 1)
+    throw DataError(file, "patches",
+                    "a .gbp holds exactly one gb patch; this scene has " +
+                        std::to_string(scene.patches.size()) + " explicit patches");
+  const auto* gb = dynamic_cast<const GBPatch*>(scene.patches[0].patch.get());
+  if (!gb)
+    throw DataError(file, "patches[0]",
+                    "a .gbp holds a gb patch; this patch is of type \"" +
+                        scene.patches[0].patch->type() + "\"");
+  return *gb;
+}
+
+bool fits_gbp(const Scene& scene) {
+  return !scene.network && scene.patches.size() == 1 &&
+         dynamic_cast<const GBPatch*>(scene.patches[0].patch.get()) != nullptr;
+}
+
+void save_scene_file(const std::filesystem::path& file, const Scene& scene) {
+  const auto type = scene_file_type(file);
+  if (!type)
+    throw DataError(file.string(), "",
+                    "unknown file type \"" + file.extension().string() +
+                        "\": scenes are saved as .json (or .gbp for a single GB patch), the types "
+                        "Open and the command line read");
+  if (*type == SceneFileType::Gbp)
+    write_gbp(file, single_gb_patch(scene, file.string()));
+  else
+    write_scene(file, scene);
+}
+
+}  // namespace pl
