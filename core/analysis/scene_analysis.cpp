@@ -41,6 +41,11 @@ PatchReport analyze_surface(const Scene& scene, const SceneSurface& s) {
   r.name = s.name;
   r.type = ev.patch().type();
   r.sides = ev.patch().domain().side_count();
+  if (s.face >= 0 && scene.network && r.type.rfind("gb-ribbons", 0) == 0) {
+    const NetworkFace& face = scene.network->faces.at(s.face);
+    r.degree = face.degree;
+    r.offsets = face.offsets.size();
+  }
   constexpr double inf = std::numeric_limits<double>::infinity();
   r.gaussian = {inf, -inf};
   r.mean = {inf, -inf};
@@ -117,7 +122,7 @@ SceneReport analyze_scene(const Scene& scene, const SceneSurfaces& ss, int curve
 std::string report_to_json(const SceneReport& r) {
   nlohmann::json j;
   j["patches"] = nlohmann::json::array();
-  for (const PatchReport& p : r.patches)
+  for (const PatchReport& p : r.patches) {
     j["patches"].push_back({{"name", p.name},
                             {"type", p.type},
                             {"sides", p.sides},
@@ -126,6 +131,11 @@ std::string report_to_json(const SceneReport& r) {
                             {"singular_samples", p.singular_samples},
                             {"gaussian_curvature", {p.gaussian[0], p.gaussian[1]}},
                             {"mean_curvature", {p.mean[0], p.mean[1]}}});
+    if (p.degree > 0) {
+      j["patches"].back()["degree"] = p.degree;
+      j["patches"].back()["offsets"] = p.offsets;
+    }
+  }
   j["edges"] = nlohmann::json::array();
   for (const EdgeReport& e : r.edges)
     j["edges"].push_back({{"edge", e.edge},
@@ -168,6 +178,11 @@ std::string report_to_text(const SceneReport& r) {
                   p.nonfinite_samples, p.singular_samples, p.gaussian[0], p.gaussian[1], p.mean[0],
                   p.mean[1]);
     out += buf;
+    if (p.degree > 0) {
+      std::snprintf(buf, sizeof buf, "  GB face: degree %d, %zu free points with offsets\n",
+                    p.degree, p.offsets);
+      out += buf;
+    }
   }
   for (const EdgeReport& e : r.edges) {
     std::snprintf(buf, sizeof buf,

@@ -18,6 +18,10 @@ struct PatchReport {
   std::size_t nonfinite_samples = 0;
   std::size_t singular_samples = 0;  // where Su x Sv vanishes (normal from the limit)
   std::array<double, 2> gaussian{0, 0}, mean{0, 0};
+  // GB network faces (interior control, docs/scene-format.md): the degree and how many free
+  // points carry offsets; degree 0 for every other surface.
+  int degree = 0;
+  std::size_t offsets = 0;
 };
 
 struct EdgeReport {

@@ -1,6 +1,7 @@
 #include "core/io/scene_io.hpp"
 
 #include <algorithm>
+#include <set>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "core/io/json_node.hpp"
 #include "core/io/patch_codec.hpp"
 #include "core/io/scene_checks.hpp"
+#include "core/patch/gb/default_net.hpp"
 
 namespace pl {
 
@@ -27,6 +29,57 @@ FaceScheme read_scheme(const JsonNode& node, int sides) {
     return FaceScheme::Gregory;
   }
   node.fail("unknown scheme \"" + s + "\" (allowed: auto, gregory, gb)");
+}
+
+// The stored index of a free point in the face's .gbp net: two names of one shared corner-block
+// point get the same key (0 for the central point).
+std::size_t offset_key(int sides, int degree, const InteriorOffset& o) {
+  return o.centre ? 0 : gb_net_index(sides, degree, o.side, o.j, o.layer);
+}
+
+// "degree" and "offsets" of face f (docs/scene-format.md, "Interior control").
+void read_interior(const JsonNode& f, NetworkFace& face) {
+  const auto degree = f.find("degree");
+  const auto offsets = f.find("offsets");
+  if (!degree && !offsets) return;
+  const int n = static_cast<int>(face.loop.size());
+  if (resolve_scheme(face, std::nullopt) != FaceScheme::GB)
+    (degree ? *degree : *offsets)
+        .fail(
+            "a Gregory face has no free interior (all its inner points are G1 data); degree "
+            "and offsets need scheme \"gb\" (or a face of 5 or more sides)");
+  if (degree) face.degree = degree->integer_in(3, kMaxGBFaceDegree);
+  if (!offsets) return;
+  std::set<std::size_t> seen;
+  for (const JsonNode& o : offsets->items()) {
+    o.allow_only({"at", "by"});
+    InteriorOffset off;
+    const JsonNode at = o.at("at");
+    if (at.raw().is_string()) {
+      if (at.string() != "center") at.fail("expected \"center\" or [side, j, layer]");
+      off.centre = true;
+    } else {
+      const auto ijk = at.items(3);
+      off.side = static_cast<int>(ijk[0].integer());
+      off.j = static_cast<int>(ijk[1].integer());
+      off.layer = static_cast<int>(ijk[2].integer());
+      if (const std::string why = interior_offset_problem(n, face.degree, off); !why.empty())
+        at.fail(why);
+    }
+    if (!seen.insert(offset_key(n, face.degree, off)).second)
+      at.fail("this point already has an offset (a shared corner point has two names)");
+    off.by = o.at("by").point();
+    face.offsets.push_back(off);
+  }
+}
+
+nlohmann::json interior_offsets_json(const std::vector<InteriorOffset>& offsets) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const InteriorOffset& o : offsets)
+    out.push_back({{"at", o.centre ? nlohmann::json("center")
+                                   : nlohmann::json::array({o.side, o.j, o.layer})},
+                   {"by", point_json(o.by)}});
+  return out;
 }
 
 Network read_network(const JsonNode& node) {
@@ -58,7 +111,7 @@ Network read_network(const JsonNode& node) {
     }
   if (auto faces = node.find("faces"))
     for (const JsonNode& f : faces->items()) {
-      f.allow_only({"loop", "scheme", "name"});
+      f.allow_only({"loop", "scheme", "name", "degree", "offsets"});
       NetworkFace face;
       const JsonNode loop = f.at("loop");
       if (loop.items().size() > std::size_t(kMaxFaceSides))
@@ -74,6 +127,7 @@ Network read_network(const JsonNode& node) {
       if (auto s = f.find("scheme"))
         face.scheme = read_scheme(*s, static_cast<int>(face.loop.size()));
       if (auto name = f.find("name")) face.name = name->string();
+      read_interior(f, face);
       net.faces.push_back(std::move(face));
     }
   return net;
@@ -220,6 +274,8 @@ std::string scene_to_json(const Scene& scene) {
       if (f.scheme == FaceScheme::Gregory) jf["scheme"] = "gregory";
       if (f.scheme == FaceScheme::GB) jf["scheme"] = "gb";
       if (!f.name.empty()) jf["name"] = f.name;
+      if (f.degree != 3) jf["degree"] = f.degree;
+      if (!f.offsets.empty()) jf["offsets"] = interior_offsets_json(f.offsets);
       net["faces"].push_back(jf);
     }
     doc["network"] = net;

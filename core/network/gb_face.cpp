@@ -6,6 +6,7 @@
 #include "core/curve/bezier_curve.hpp"
 #include "core/domain/convex_polygon.hpp"
 #include "core/domain/domain_from_boundary.hpp"
+#include "core/network/gb_face_interior.hpp"
 #include "core/patch/gb/ribbon_elevation.hpp"
 
 namespace pl {
@@ -119,7 +120,11 @@ FaceRibbons orient_reflex_corners(const FaceRibbons& in) {
   return out;
 }
 
-std::unique_ptr<GBRibbonPatch> gb_face_patch(const FaceRibbons& input, GBDomainKind* used) {
+namespace {
+
+// The domain choice of gb_face_patch, building with make(ribbons, polygon).
+template <class Make>
+auto patch_over_chosen_domain(const FaceRibbons& input, GBDomainKind* used, Make&& make) {
   const int n = static_cast<int>(input.sides.size());
   if (n < 3) throw std::invalid_argument("a GB face needs at least 3 sides");
   const std::vector<double> turning = face_turning_angles(input);
@@ -152,6 +157,21 @@ std::unique_ptr<GBRibbonPatch> gb_face_patch(const FaceRibbons& input, GBDomainK
     throw std::invalid_argument("no usable GB domain (" + why + "projected domain: " + e.what() +
                                 ")");
   }
+}
+
+}  // namespace
+
+std::unique_ptr<GBRibbonPatch> gb_face_patch(const FaceRibbons& input, GBDomainKind* used) {
+  return patch_over_chosen_domain(input, used, make);
+}
+
+std::unique_ptr<Patch> gb_face_patch(const FaceRibbons& input, int degree,
+                                     std::span<const InteriorOffset> offsets, GBDomainKind* used) {
+  if (degree == 3 && offsets.empty()) return gb_face_patch(input, used);
+  return patch_over_chosen_domain(
+      input, used, [&](const FaceRibbons& r, std::vector<Vec2> polygon) {
+        return gb_interior_face_patch(r, std::move(polygon), degree, offsets);
+      });
 }
 
 }  // namespace pl

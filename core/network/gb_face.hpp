@@ -6,6 +6,7 @@
 #pragma once
 
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "core/network/face_ribbons.hpp"
@@ -34,5 +35,12 @@ FaceRibbons orient_reflex_corners(const FaceRibbons& ribbons);
 // coordinates fail).
 std::unique_ptr<GBRibbonPatch> gb_face_patch(const FaceRibbons& ribbons,
                                              GBDomainKind* used = nullptr);
+
+// The same face with interior control (core/network/gb_face_interior.hpp): ribbons of degree
+// `degree`, the free points at their defaults plus `offsets`. Degree 3 without offsets is the
+// patch above, exactly.
+std::unique_ptr<Patch> gb_face_patch(const FaceRibbons& ribbons, int degree,
+                                     std::span<const InteriorOffset> offsets,
+                                     GBDomainKind* used = nullptr);
 
 }  // namespace pl

@@ -119,7 +119,7 @@ FillingUpdate IncrementalFilling::update_in_place(const Network& n) {
       if (face.scheme == faces_[f].scheme && face.ribbons == faces_[f].ribbons &&
           same_fill_data(n.faces[f], network_.faces[f]))
         continue;  // e.g. a handle moved back where it was: nothing to refill
-      FacePatch fp = build_face_patch(f, face.scheme, face.ribbons, source_);
+      FacePatch fp = build_face_patch(f, face.scheme, face.ribbons, n.faces[f], source_);
       face.patch_side = fp.patch_side;
       new_faces.emplace_back(f, std::move(face));
       up.refilled.push_back(std::move(fp));
@@ -197,7 +197,7 @@ FillingUpdate IncrementalFilling::rebuild(const Network& n) {
       }
     }
     if (up.previous_face[f] >= 0) continue;
-    FacePatch fp = build_face_patch(fi, face.scheme, face.ribbons, source_);
+    FacePatch fp = build_face_patch(fi, face.scheme, face.ribbons, n.faces[f], source_);
     face.patch_side = fp.patch_side;
     up.refilled.push_back(std::move(fp));
   }

@@ -18,7 +18,7 @@ std::string face_path(int f) {
 }  // namespace
 
 FacePatch build_face_patch(int face, FaceScheme scheme, const FaceRibbons& ribbons,
-                           const std::string& source) {
+                           const NetworkFace& data, const std::string& source) {
   FacePatch fp;
   fp.face = face;
   if (scheme == FaceScheme::Gregory) {
@@ -30,7 +30,7 @@ FacePatch build_face_patch(int face, FaceScheme scheme, const FaceRibbons& ribbo
   // GB faces: the independent-ribbon GB patch from the same ribbons, over the regular n-gon
   // (convex faces) or a concave domain (core/network/gb_face.hpp); face side i = domain side i.
   try {
-    fp.patch = gb_face_patch(ribbons);
+    fp.patch = gb_face_patch(ribbons, data.degree, data.offsets);
   } catch (const std::invalid_argument& e) {
     throw DataError(source, face_path(face), std::string("cannot build the GB patch: ") + e.what());
   }
@@ -71,7 +71,7 @@ void check_fillable_near(const Network& network, const NetworkTopology& topology
     for (int e : face_edges) cross[e] = edge_cross_tangents(network, topology, planes, e);
     for (int f : faces)
       build_face_patch(f, resolve_scheme(network.faces[f], std::nullopt),
-                       face_ribbons(network, topology, cross, f), source);
+                       face_ribbons(network, topology, cross, f), network.faces[f], source);
   } catch (const DataError& e) {
     if (!e.source().empty()) throw;
     throw DataError(source, e.where(), e.message());
@@ -91,7 +91,8 @@ NetworkFilling fill_network(const Network& network, const NetworkTopology& topol
     throw DataError(source, e.where(), e.message());  // the construction does not know the file
   }
   for (std::size_t f = 0; f < network.faces.size(); ++f)
-    out.faces.push_back(build_face_patch(static_cast<int>(f), schemes[f], ribbons[f], source));
+    out.faces.push_back(
+        build_face_patch(static_cast<int>(f), schemes[f], ribbons[f], network.faces[f], source));
   return out;
 }
 

@@ -32,8 +32,9 @@ struct FaceRibbons;
 // The patch of one face with the given (resolved) scheme from its ribbons: the one place a face
 // becomes a patch, shared by fill_network and the network editor. Throws DataError naming
 // "network.faces[face]" for faces it cannot fill.
+// `data` is the face itself: a GB face takes its degree and offsets from it.
 FacePatch build_face_patch(int face, FaceScheme scheme, const FaceRibbons& ribbons,
-                           const std::string& source);
+                           const NetworkFace& data, const std::string& source);
 
 // Checks that the faces near `vertices` can be filled: the tangent planes at those vertices and
 // at the other ends of their edges, the fields of those edges and the patches of the faces using

@@ -95,4 +95,32 @@ FaceScheme resolve_scheme(const NetworkFace& face, std::optional<FaceScheme> ove
   return s;
 }
 
+bool is_free_interior_point(int d, const InteriorOffset& at) {
+  if (at.centre) return true;
+  return at.layer >= 2 && at.layer < gb_face_layers(d) && at.j >= 2 && d - at.j >= 2;
+}
+
+std::string interior_offset_problem(int n, int d, const InteriorOffset& at) {
+  if (at.centre) return "";
+  std::string name = "[";
+  name += std::to_string(at.side);
+  name += ", ";
+  name += std::to_string(at.j);
+  name += ", ";
+  name += std::to_string(at.layer);
+  name += "]";
+  if (at.side < 0 || at.side >= n)
+    return "point " + name + ": side " + std::to_string(at.side) + " does not exist (" +
+           std::to_string(n) + " sides)";
+  if (at.layer < 0 || at.layer >= gb_face_layers(d))
+    return "point " + name + ": layer " + std::to_string(at.layer) + " does not exist (degree " +
+           std::to_string(d) + " has layers 0.." + std::to_string(gb_face_layers(d) - 1) + ")";
+  if (at.j < 0 || at.j > d) return "point " + name + ": j must be in 0.." + std::to_string(d);
+  if (!is_free_interior_point(d, at))
+    return "point " + name +
+           " is not free: layers 0 and 1 are the G1 boundary data (free points: layers k >= 2 with "
+           "2 <= j <= d - 2, and \"center\")";
+  return "";
+}
+
 }  // namespace pl

@@ -21,10 +21,27 @@ struct NetworkEdge {
   bool operator==(const NetworkEdge&) const = default;
 };
 
+// A displacement of one free interior control point of a GB face from its default position
+// (docs/scene-format.md, "Interior control"): the central point, or point j of layer k of the
+// ribbon on face side i in the .gbp naming (a shared corner-block point may be named from either
+// ribbon).
+struct InteriorOffset {
+  bool centre = false;
+  int side = 0, j = 0, layer = 0;  // when !centre
+  Vec3 by{0};
+  bool operator==(const InteriorOffset&) const = default;
+};
+
 struct NetworkFace {
+  // A constructor (not an aggregate) so that {loop, scheme, name} stays the short form.
+  NetworkFace() = default;
+  NetworkFace(std::vector<int> loop_, FaceScheme scheme_ = FaceScheme::Auto, std::string name_ = {})
+      : loop(std::move(loop_)), scheme(scheme_), name(std::move(name_)) {}
   std::vector<int> loop;
   FaceScheme scheme = FaceScheme::Auto;
   std::string name;
+  int degree = 3;  // GB faces: the degree of every ribbon along its side (>= 3)
+  std::vector<InteriorOffset> offsets;  // GB faces: the free points moved from their defaults
   bool operator==(const NetworkFace&) const = default;
 };
 
@@ -57,6 +74,19 @@ struct NetworkTopology {
 // shared edges traversed in opposite directions, at most two faces per edge). Throws DataError
 // with source and the JSON path of the offending item ("network.faces[3].loop[2]").
 NetworkTopology validate_network(const Network& network, const std::string& source);
+
+// Interior control of GB faces. A face of degree d has l = ceil(d/2) layers per ribbon (the
+// .gbp layer count); layers 0 and 1 are G1 data, so point [i, j, k] is free when it lies in a
+// layer k >= 2 at least two points from either end of its row (min(k, j, d - j) >= 2: the
+// corner-block positions outside that range are points of a lower layer of the neighbouring
+// ribbon).
+inline constexpr int kMaxGBFaceDegree = 15;
+inline int gb_face_layers(int degree) {
+  return (degree + 1) / 2;
+}
+bool is_free_interior_point(int degree, const InteriorOffset& at);
+// Why offset `at` cannot be applied to a face of n sides and degree d, or "" if it can.
+std::string interior_offset_problem(int sides, int degree, const InteriorOffset& at);
 
 // The scheme a face is filled with: Auto resolves to Gregory for 3 and 4 sides, GB otherwise;
 // an override (from --scheme) applies where the face allows it.

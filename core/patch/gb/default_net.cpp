@@ -10,9 +10,9 @@ namespace {
 
 // Ribbon i's grid over the working copy of the points.
 struct Net {
-  const GBPatch& shape;
+  int n, d;
   std::vector<Vec3>& p;
-  Vec3& at(int i, int j, int k) { return p[shape.index(i, j, k)]; }
+  Vec3& at(int i, int j, int k) { return p[gb_net_index(n, d, i, j, k)]; }
   // Linear extrapolation of ribbon i's rows 0 and 1 to row k.
   Vec3 extrapolated(int i, int j, int k) {
     return at(i, j, 0) + double(k) * (at(i, j, 1) - at(i, j, 0));
@@ -20,6 +20,17 @@ struct Net {
 };
 
 }  // namespace
+
+std::size_t gb_net_index(int n, int d, int i, int j, int k) {
+  // Shared corner blocks: a point outside the stored range k..d-1-k of its row is stored by a
+  // neighbouring side, where it falls inside the range (one step suffices).
+  if (j < k) return gb_net_index(n, d, i - 1, d - k, j);
+  if (j > d - 1 - k) return gb_net_index(n, d, i + 1, k, d - j);
+  std::size_t offset = 1;
+  for (int r = 0; r < k; ++r) offset += static_cast<std::size_t>(n) * (d - 2 * r);
+  const int wrapped = ((i % n) + n) % n;
+  return offset + static_cast<std::size_t>(wrapped) * (d - 2 * k) + (j - k);
+}
 
 int gb_ring(int n, int d, std::size_t k) {
   if (k == 0) return -1;
@@ -32,18 +43,20 @@ int gb_ring(int n, int d, std::size_t k) {
   throw std::invalid_argument("gb_ring: index " + std::to_string(k) + " beyond the net");
 }
 
-GBPatch gb_default_net(const GBPatch& patch, std::span<const bool> placed) {
-  const int n = patch.sides(), d = patch.degree(), l = patch.layers();
-  if (placed.size() != patch.size())
+std::vector<Vec3> gb_default_points(int n, int d, std::vector<Vec3> p,
+                                    std::span<const bool> placed) {
+  if (n < 3 || d < 1) throw std::invalid_argument("gb_default_net: a net needs n >= 3, d >= 1");
+  const int l = GBPatch::layers(d);
+  const std::size_t size = GBPatch::point_count(n, d);
+  if (placed.size() != size || p.size() != size)
     throw std::invalid_argument("gb_default_net: " + std::to_string(placed.size()) + " flags for " +
-                                std::to_string(patch.size()) + " points");
-  for (std::size_t k = 1; k < patch.size(); ++k)
+                                std::to_string(size) + " points");
+  for (std::size_t k = 1; k < size; ++k)
     if (gb_ring(n, d, k) == 0 && !placed[k])
       throw std::invalid_argument("gb_default_net: boundary point " + std::to_string(k) +
                                   " must be placed");
-  std::vector<Vec3> p = patch.control_points();
-  Net net{patch, p};
-  const auto unplaced = [&](int i, int j, int k) { return !placed[patch.index(i, j, k)]; };
+  Net net{n, d, p};
+  const auto unplaced = [&](int i, int j, int k) { return !placed[gb_net_index(n, d, i, j, k)]; };
 
   // 1. Ring 1: parallelogram twists, then the cross vectors between them.
   if (l >= 2) {
@@ -93,7 +106,12 @@ GBPatch gb_default_net(const GBPatch& patch, std::span<const bool> placed) {
     }
     p[0] = c;
   }
-  return GBPatch(n, d, std::move(p));
+  return p;
+}
+
+GBPatch gb_default_net(const GBPatch& patch, std::span<const bool> placed) {
+  return GBPatch(patch.sides(), patch.degree(),
+                 gb_default_points(patch.sides(), patch.degree(), patch.control_points(), placed));
 }
 
 GBPatch gb_default_net(const GBPatch& patch, int kept_rings) {

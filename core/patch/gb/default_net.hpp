@@ -47,6 +47,15 @@
 
 namespace pl {
 
+// The .gbp stored index of P^i_{j,k} (any j in 0..d, k in 0..l-1, i taken modulo n) of a net of
+// n sides and degree d, without building a patch (so for any n, also beyond GBPatch::kMaxSides).
+std::size_t gb_net_index(int sides, int degree, int i, int j, int k);
+
+// The rules below on a plain net in .gbp order (GBPatch::point_count(n, d) points, any n >= 3):
+// every point with !placed[k] is moved to its default position. Throws like gb_default_net.
+std::vector<Vec3> gb_default_points(int sides, int degree, std::vector<Vec3> points,
+                                    std::span<const bool> placed);
+
 // Ring of stored point k of a GB patch of n sides and degree d: 0 for the boundary, r for the
 // points at grid distance r from it, -1 for the central point C_0 (stored index 0).
 int gb_ring(int sides, int degree, std::size_t k);

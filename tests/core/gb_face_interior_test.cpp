@@ -1,0 +1,368 @@
+// Interior control of network GB faces (core/network/gb_face_interior.hpp): degree and offsets
+// of the free points never touch the boundary or the G1 joins, offsets ride on defaults that
+// follow the boundary, no offsets at degree 3 is the face without interior control.
+#include "core/network/gb_face_interior.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include "core/base/data_error.hpp"
+#include "core/io/scene_io.hpp"
+#include "core/network/face_ribbons.hpp"
+#include "core/network/gb_face.hpp"
+#include "core/network/incremental_filling.hpp"
+#include "core/patch/gb/default_net.hpp"
+#include "core/patch/gb/gb_centred_ribbon_patch.hpp"
+#include "network_test_util.hpp"
+
+namespace pl {
+namespace {
+
+using test::network_size;
+
+Network load_network(const std::string& name) {
+  const std::string path = std::string(PATCHLAB_SOURCE_DIR) + "/assets/" + name;
+  std::ifstream in(path);
+  EXPECT_TRUE(in) << path;
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return *parse_scene(ss.str(), path).network;
+}
+
+// Every face GB (the sample networks' triangles and quads too), so every face has an interior.
+Network all_gb(Network n) {
+  for (NetworkFace& f : n.faces) f.scheme = FaceScheme::GB;
+  return n;
+}
+
+struct Measure {
+  double deviation = 0;  // boundary against the edges, relative to the network's size
+  double angle_deg = 0;  // largest normal angle across shared edges
+};
+Measure measure(const Network& n) {
+  const NetworkTopology topo = validate_network(n, "test");
+  const NetworkFilling filling = fill_network(n, topo, std::nullopt, "test");
+  const auto faces = test::surfaces(filling);
+  return {test::max_boundary_deviation(n, topo, faces) / network_size(n),
+          test::max_g1_angle_deg(topo, faces)};
+}
+
+// The free points of a face of n sides and degree d, each once (the .gbp stored names).
+std::vector<InteriorOffset> free_points(int n, int d) {
+  std::vector<InteriorOffset> out{InteriorOffset{.centre = true}};
+  for (int k = 2; k < gb_face_layers(d); ++k)
+    for (int i = 0; i < n; ++i)
+      for (int j = k; j <= d - 1 - k; ++j) {
+        InteriorOffset o{.side = i, .j = j, .layer = k};
+        if (is_free_interior_point(d, o)) out.push_back(o);
+      }
+  return out;
+}
+
+std::vector<Vec2> domain_samples(const Patch& p) {
+  std::vector<Vec2> xs;
+  for (const Vec2& x : p.domain().tessellate(12).points) xs.push_back(x);
+  return xs;
+}
+
+TEST(GBFaceInterior, RandomMovesOfFreePointsKeepBoundariesAndG1) {
+  std::mt19937 rng(7);
+  for (const char* file : {"gb-hole-filling.json", "gb-concave-l.json", "sphere-blob"}) {
+    Network n =
+        std::string(file) == "sphere-blob" ? all_gb(test::sphere_blob(true)) : load_network(file);
+    const double size = network_size(n);
+    std::vector<int> gb;
+    for (std::size_t f = 0; f < n.faces.size(); ++f)
+      if (resolve_scheme(n.faces[f], std::nullopt) == FaceScheme::GB) {
+        n.faces[f].degree = 5 + int(f % 3);  // 5, 6, 7: free rows and the centre
+        gb.push_back(int(f));
+      }
+    ASSERT_FALSE(gb.empty());
+    Measure worst;
+    std::uniform_real_distribution<double> u(-0.1, 0.1);
+    const int moves = std::string(file) == "sphere-blob" ? 60 : 70;
+    for (int m = 0; m < moves; ++m) {
+      NetworkFace& face = n.faces[gb[rng() % gb.size()]];
+      const auto points = free_points(int(face.loop.size()), face.degree);
+      InteriorOffset o = points[rng() % points.size()];
+      const auto same = std::find_if(face.offsets.begin(), face.offsets.end(), [&](auto& x) {
+        return x.centre == o.centre && x.side == o.side && x.j == o.j && x.layer == o.layer;
+      });
+      const Vec3 by(u(rng) * size, u(rng) * size, u(rng) * size);
+      if (same != face.offsets.end()) {
+        same->by += by;
+      } else {
+        o.by = by;
+        face.offsets.push_back(o);
+      }
+      const Measure now = measure(n);
+      worst.deviation = std::max(worst.deviation, now.deviation);
+      worst.angle_deg = std::max(worst.angle_deg, now.angle_deg);
+    }
+    std::printf("%s: %d random free-point moves, boundary %.3g (relative), G1 %.3g deg\n", file,
+                moves, worst.deviation, worst.angle_deg);
+    EXPECT_LT(worst.deviation, 1e-12) << file;
+    EXPECT_LT(worst.angle_deg, 1e-6) << file;
+  }
+}
+
+// The interior really moves: an offset of the central point moves the surface, inside only.
+TEST(GBFaceInterior, CentreOffsetMovesTheInteriorByItsBubbleWeight) {
+  Network n = load_network("gb-hole-filling.json");
+  const NetworkTopology topo = validate_network(n, "test");
+  std::vector<ProjectedVertex> projected;
+  const auto ribbons = build_face_ribbons(n, topo, projected);
+  const Vec3 by(0, 0, 0.25);
+  const InteriorOffset o{.centre = true, .by = by};
+  const auto plain = gb_face_patch(ribbons[0], 3, {});
+  const auto moved = gb_face_patch(ribbons[0], 3, std::span(&o, 1));
+  const auto* centred = dynamic_cast<const GBCentredRibbonPatch*>(moved.get());
+  ASSERT_NE(centred, nullptr);
+  double worst = 0;
+  for (const Vec2& x : domain_samples(*plain)) {
+    // Independent of evaluate(): the displacement is phi_0 by, phi_0 = prod h_i^2 / its value at
+    // the centre, h_i from the domain's mean value coordinates.
+    const MeanValueParameters mv(centred->ribbon_patch().polygon().vertices());
+    const auto prod_h2 = [&](Vec2 y) {
+      for (const Vec2& v : centred->ribbon_patch().polygon().vertices())
+        if (v == y) return 0.0;
+      std::vector<Jet> lam(5), h(5);
+      mv.evaluate(y, lam, {}, h);
+      double p = 1;
+      for (const Jet& hi : h) p *= hi.f * hi.f;
+      return p;
+    };
+    const Vec3 expect = plain->evaluate(x).p + prod_h2(x) / prod_h2(Vec2(0)) * by;
+    worst = std::max(worst, glm::length(moved->evaluate(x).p - expect));
+  }
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_NEAR(glm::length(moved->evaluate({0, 0}).p - plain->evaluate({0, 0}).p), 0.25, 1e-12);
+}
+
+TEST(GBFaceInterior, ZeroOffsetsAtDegreeThreeAreTheFaceWithoutInteriorControl) {
+  for (const char* file : {"gb-hole-filling.json", "gb-concave-l.json"}) {
+    const Network n = all_gb(load_network(file));
+    const NetworkTopology topo = validate_network(n, "test");
+    std::vector<ProjectedVertex> projected;
+    const auto ribbons = build_face_ribbons(n, topo, projected);
+    for (std::size_t f = 0; f < n.faces.size(); ++f) {
+      const auto today = gb_face_patch(ribbons[f]);
+      const InteriorOffset zero{.centre = true};
+      const auto with = gb_face_patch(ribbons[f], 3, std::span(&zero, 1));
+      double worst = 0, scale = network_size(n);
+      for (const Vec2& x : domain_samples(*today)) {
+        const SurfaceJet a = today->evaluate(x), b = with->evaluate(x);
+        worst = std::max(
+            {worst, glm::length(a.p - b.p), glm::length(a.su - b.su), glm::length(a.sv - b.sv)});
+      }
+      EXPECT_LT(worst / scale, 1e-12) << file << " face " << f;
+      // and through the basis (S = sum phi_k C_k holds for the centred form)
+      std::vector<Jet> phi(with->size());
+      const Vec2 x = today->domain().interior_point();
+      with->basis(x, phi);
+      EXPECT_LT(glm::length(combine(with->control_points(), phi).p - today->evaluate(x).p) / scale,
+                1e-12);
+    }
+  }
+}
+
+TEST(GBFaceInterior, OffsetsFollowTheBoundary) {
+  Network n = load_network("gb-hole-filling.json");
+  NetworkFace& pent = n.faces[0];
+  ASSERT_EQ(pent.loop.size(), 5u);
+  pent.degree = 6;
+  pent.offsets = {{.centre = true, .by = {0.1, -0.2, 0.3}},
+                  {.side = 1, .j = 3, .layer = 2, .by = {0, 0, 0.2}},
+                  {.side = 2, .j = 2, .layer = 2, .by = {0.05, 0, -0.1}}};
+  const auto check = [&](const Network& net) {
+    const NetworkTopology topo = validate_network(net, "test");
+    std::vector<ProjectedVertex> projected;
+    const auto ribbons = build_face_ribbons(net, topo, projected);
+    const std::vector<Vec3> defaults = gb_face_default_net(ribbons[0], 6);
+    const auto patch = gb_face_patch(ribbons[0], 6, pent.offsets);
+    const auto& c = dynamic_cast<const GBCentredRibbonPatch&>(*patch);
+    const GBRibbonPatch& r = c.ribbon_patch();
+    double worst = 0;
+    for (const InteriorOffset& o : pent.offsets) {
+      if (o.centre) {
+        worst =
+            std::max(worst, glm::length(c.control_point(c.centre_index()) - (defaults[0] + o.by)));
+        continue;
+      }
+      const Vec3 want = defaults[gb_net_index(5, 6, o.side, o.j, o.layer)] + o.by;
+      worst = std::max(worst, glm::length(r.point(o.side, o.j, o.layer) - want));
+    }
+    // an unmoved free point sits at its default
+    worst = std::max(worst, glm::length(r.point(3, 3, 2) - defaults[gb_net_index(5, 6, 3, 3, 2)]));
+    return std::pair{worst, defaults};
+  };
+  const auto [before, defaults_before] = check(n);
+  // Move a vertex of the pentagon with its edges' handles.
+  const int v = pent.loop[1];
+  const Vec3 d(0.07, -0.04, 0.11);
+  n.vertices[v] += d;
+  for (NetworkEdge& e : n.edges)
+    for (int s = 0; s < 2; ++s)
+      if (e.v[s] == v) e.handles[s] += d;
+  const auto [after, defaults_after] = check(n);
+  EXPECT_LT(before, 1e-12);
+  EXPECT_LT(after, 1e-12);
+  EXPECT_GT(glm::length(defaults_after[0] - defaults_before[0]), 1e-3);  // the defaults moved
+  const Measure m = measure(n);
+  EXPECT_LT(m.deviation, 1e-12);
+  EXPECT_LT(m.angle_deg, 1e-6);
+}
+
+// A planar boundary with planar cross-boundary data: every default lies on the plane (the
+// default-net rule is affine), so the face is the plane at every degree.
+TEST(GBFaceInterior, PlanarFaceStaysPlanarAtEveryDegree) {
+  Network n;
+  for (int i = 0; i < 5; ++i)
+    n.vertices.push_back({std::cos(i * 2 * M_PI / 5), std::sin(i * 2 * M_PI / 5), 0});
+  for (int i = 0; i < 5; ++i) {
+    const Vec3 a = n.vertices[i], b = n.vertices[(i + 1) % 5];
+    n.edges.push_back({{i, (i + 1) % 5}, {a + (b - a) / 3.0, b - (b - a) / 3.0}, ""});
+  }
+  n.faces.push_back(NetworkFace({0, 1, 2, 3, 4}));
+  for (int d = 3; d <= 9; ++d) {
+    n.faces[0].degree = d;
+    const NetworkTopology topo = validate_network(n, "test");
+    const NetworkFilling filling = fill_network(n, topo, std::nullopt, "test");
+    double worst = 0;
+    for (const Vec3& p : filling.faces[0].patch->control_points())
+      worst = std::max(worst, std::abs(p.z));
+    for (const Vec2& x : domain_samples(*filling.faces[0].patch))
+      worst = std::max(worst, std::abs(filling.faces[0].patch->evaluate(x).p.z));
+    EXPECT_LT(worst, 1e-14) << "degree " << d;
+  }
+}
+
+TEST(GBFaceInterior, RaisingTheDegreeKeepsBoundariesAndSideNormals) {
+  for (const char* file : {"gb-hole-filling.json", "gb-concave-l.json"}) {
+    const Network base = all_gb(load_network(file));
+    const NetworkTopology topo = validate_network(base, "test");
+    const NetworkFilling cubic = fill_network(base, topo, std::nullopt, "test");
+    for (int d = 4; d <= 9; ++d) {
+      Network n = base;
+      for (NetworkFace& f : n.faces) f.degree = d;
+      const NetworkFilling raised = fill_network(n, topo, std::nullopt, "test");
+      const auto faces = test::surfaces(raised), before = test::surfaces(cubic);
+      double angle = 0;
+      for (std::size_t f = 0; f < n.faces.size(); ++f)
+        for (std::size_t i = 0; i < n.faces[f].loop.size(); ++i)
+          for (int k = 0; k <= test::kEdgeSamples; ++k) {
+            const double t = double(k) / test::kEdgeSamples;
+            angle = std::max(angle, test::angle_between_deg(
+                                        test::side_normal(faces[f], topo, int(f), int(i), t),
+                                        test::side_normal(before[f], topo, int(f), int(i), t)));
+          }
+      EXPECT_LT(test::max_boundary_deviation(n, topo, faces) / network_size(n), 1e-12)
+          << file << " degree " << d;
+      EXPECT_LT(angle, 1e-6) << file << " degree " << d;
+    }
+  }
+}
+
+std::string face_scene(const std::string& face_extra, int sides = 5) {
+  std::ostringstream s;
+  s << R"({"patchlab": 1, "network": {"vertices": [)";
+  for (int i = 0; i < sides; ++i)
+    s << (i ? "," : "") << "[" << std::cos(i * 2 * M_PI / sides) << ","
+      << std::sin(i * 2 * M_PI / sides) << ",0]";
+  s << R"(], "edges": [)";
+  for (int i = 0; i < sides; ++i) {
+    const int j = (i + 1) % sides;
+    const Vec3 a(std::cos(i * 2 * M_PI / sides), std::sin(i * 2 * M_PI / sides), 0),
+        b(std::cos(j * 2 * M_PI / sides), std::sin(j * 2 * M_PI / sides), 0);
+    const Vec3 h1 = a + (b - a) / 3.0, h2 = b - (b - a) / 3.0;
+    s << (i ? "," : "") << R"({"v": [)" << i << "," << j << R"(], "handles": [[)" << h1.x << ","
+      << h1.y << ",0],[" << h2.x << "," << h2.y << ",0]]}";
+  }
+  s << R"(], "faces": [{"loop": [)";
+  for (int i = 0; i < sides; ++i) s << (i ? "," : "") << i;
+  s << "]" << face_extra << "}]}}";
+  return s.str();
+}
+
+std::string read_error(const std::string& text) {
+  try {
+    parse_scene(text, "t.json");
+  } catch (const DataError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(GBFaceInterior, SceneKeysRoundTrip) {
+  const Scene s =
+      parse_scene(face_scene(R"(, "degree": 6, "offsets": [{"at": "center", "by": [0, 0, 0.5]},
+                 {"at": [4, 3, 2], "by": [0.125, 0, 0]}])"),
+                  "t.json");
+  const NetworkFace& f = s.network->faces[0];
+  EXPECT_EQ(f.degree, 6);
+  ASSERT_EQ(f.offsets.size(), 2u);
+  EXPECT_TRUE(f.offsets[0].centre);
+  EXPECT_EQ(f.offsets[1].side, 4);
+  EXPECT_EQ(f.offsets[1].j, 3);
+  EXPECT_EQ(f.offsets[1].layer, 2);
+  EXPECT_EQ(f.offsets[1].by, Vec3(0.125, 0, 0));
+  const Scene back = parse_scene(scene_to_json(s), "again.json");
+  EXPECT_EQ(*back.network, *s.network);
+  // Degree 3 and no offsets write nothing new.
+  const Scene plain = parse_scene(face_scene(""), "t.json");
+  EXPECT_EQ(scene_to_json(plain).find("degree"), std::string::npos);
+}
+
+TEST(GBFaceInterior, BadInteriorKeysAreLocatedErrors) {
+  const auto expect = [](const std::string& extra, const std::string& where,
+                         const std::string& what, int sides = 5) {
+    const std::string e = read_error(face_scene(extra, sides));
+    EXPECT_NE(e.find(where), std::string::npos) << e;
+    EXPECT_NE(e.find(what), std::string::npos) << e;
+  };
+  expect(R"(, "degree": 2)", "network.faces[0].degree", "");
+  expect(R"(, "degree": 16)", "network.faces[0].degree", "");
+  expect(R"(, "degree": 5)", "network.faces[0].degree", "Gregory face has no free interior", 4);
+  expect(R"(, "scheme": "gregory", "offsets": [])", "network.faces[0].offsets",
+         "Gregory face has no free interior", 4);
+  expect(R"(, "degree": 6, "offsets": [{"at": [0, 1, 2], "by": [0,0,0]}])",
+         "network.faces[0].offsets[0].at", "not free");
+  expect(R"(, "degree": 6, "offsets": [{"at": [0, 3, 1], "by": [0,0,0]}])",
+         "network.faces[0].offsets[0].at", "not free");
+  expect(R"(, "degree": 6, "offsets": [{"at": [5, 3, 2], "by": [0,0,0]}])",
+         "network.faces[0].offsets[0].at", "side 5 does not exist");
+  expect(R"(, "degree": 4, "offsets": [{"at": [0, 2, 2], "by": [0,0,0]}])",
+         "network.faces[0].offsets[0].at", "layer 2 does not exist");
+  expect(R"(, "offsets": [{"at": "middle", "by": [0,0,0]}])", "network.faces[0].offsets[0].at",
+         "center");
+  // [0, 4, 2] and [1, 2, 2] name one shared corner-block point of a degree-6 face.
+  expect(R"(, "degree": 6, "offsets": [{"at": [0, 4, 2], "by": [0,0,0]},
+            {"at": [1, 2, 2], "by": [1,0,0]}])",
+         "network.faces[0].offsets[1].at", "already has an offset");
+  expect(R"(, "offsets": [{"at": "center"}])", "network.faces[0].offsets[0]", "by");
+  expect(R"(, "offsets": [{"at": "center", "by": [0,0,0], "x": 1}])", "network.faces[0].offsets[0]",
+         "x");
+}
+
+// The engine follows interior edits: an offset changes one face's fill data, so exactly that face
+// is refilled, and its patch is the from-scratch filling's.
+TEST(GBFaceInterior, IncrementalFillingRefillsOnlyTheEditedFace) {
+  Network n = load_network("gb-hole-filling.json");
+  n.faces[0].degree = 6;
+  IncrementalFilling filling(std::nullopt, "t.json");
+  filling.update(n);
+  n.faces[0].offsets.push_back({.side = 2, .j = 3, .layer = 2, .by = {0, 0, 0.2}});
+  const FillingUpdate up = filling.update(n);
+  ASSERT_EQ(up.refilled.size(), 1u);
+  EXPECT_EQ(up.refilled[0].face, 0);
+  const NetworkFilling scratch = fill_network(n, validate_network(n, "t"), std::nullopt, "t");
+  const Patch &a = *up.refilled[0].patch, &b = *scratch.faces[0].patch;
+  ASSERT_EQ(a.control_points(), b.control_points());
+  for (const Vec2& x : domain_samples(a)) EXPECT_EQ(a.evaluate(x).p, b.evaluate(x).p);
+}
+
+}  // namespace
+}  // namespace pl
