@@ -107,7 +107,9 @@ TEST(CurveExport, FilesReadBackHoldEveryCurve) {
       EXPECT_NEAR(covered, c.t_max(), 1e-12) << ext << " " << c.name;
     }
     EXPECT_EQ(e, edges.size()) << ext;
-    if (format == CadFormat::Step) EXPECT_EQ(edges.size(), scene.curves.size());
+    if (format == CadFormat::Step) {
+      EXPECT_EQ(edges.size(), scene.curves.size());
+    }
   }
   std::error_code ec;
   std::filesystem::remove_all(dir, ec);
