@@ -19,23 +19,6 @@ Vec3 unit_or_zero(const Vec3& x) {
   return l > 0 ? x / l : Vec3(0);
 }
 
-// The faces' corner normals at v summed (right-hand rule), the filling's tie breaker.
-Vec3 corner_normals(const Network& n, int v) {
-  Vec3 sum(0);
-  for (const NetworkFace& f : n.faces) {
-    const int sides = int(f.loop.size());
-    for (int i = 0; i < sides; ++i) {
-      if (f.loop[i] != v) continue;
-      const int out = edge_between(n, v, f.loop[(i + 1) % sides]);
-      const int back = edge_between(n, f.loop[(i + sides - 1) % sides], v);
-      if (out < 0 || back < 0) continue;
-      sum +=
-          glm::cross(unit_or_zero(end_tangent(n, out, v)), unit_or_zero(end_tangent(n, back, v)));
-    }
-  }
-  return sum;
-}
-
 // The least-squares plane of the end tangents at v of its edges not in `skip`, if they span one.
 std::optional<Vec3> plane_of_tangents(const Network& n, int v, std::span<const int> skip) {
   std::vector<Vec3> unit;
@@ -45,7 +28,7 @@ std::optional<Vec3> plane_of_tangents(const Network& n, int v, std::span<const i
     if (t != Vec3(0)) unit.push_back(t);
   }
   if (unit.size() < 2) return std::nullopt;
-  const Vec3 normal = fit_plane_normal(unit, corner_normals(n, v));
+  const Vec3 normal = fit_plane_normal(unit, corner_normal_sum(n, v));
   if (normal == Vec3(0)) return std::nullopt;
   return normal;
 }
@@ -62,6 +45,22 @@ Vec3& handle_at(Network& n, int e, int v) {
 }
 
 }  // namespace
+
+Vec3 corner_normal_sum(const Network& n, int v) {
+  Vec3 sum(0);
+  for (const NetworkFace& f : n.faces) {
+    const int sides = int(f.loop.size());
+    for (int i = 0; i < sides; ++i) {
+      if (f.loop[i] != v) continue;
+      const int out = edge_between(n, v, f.loop[(i + 1) % sides]);
+      const int back = edge_between(n, f.loop[(i + sides - 1) % sides], v);
+      if (out < 0 || back < 0) continue;
+      sum +=
+          glm::cross(unit_or_zero(end_tangent(n, out, v)), unit_or_zero(end_tangent(n, back, v)));
+    }
+  }
+  return sum;
+}
 
 std::vector<int> edges_at(const Network& n, int v) {
   std::vector<int> out;

@@ -29,6 +29,10 @@ enum class HandleMode {
 // The edges at vertex v, in edge order.
 std::vector<int> edges_at(const Network& network, int v);
 
+// The corner normals of the faces at v summed (right-hand rule: outgoing x incoming end
+// tangent): which side of v's tangent plane its faces face, the filling's tie breaker.
+Vec3 corner_normal_sum(const Network& network, int v);
+
 // The normal of the plane handles at v are kept in: its fixed normal, else the least-squares
 // plane of the end tangents of v's edges other than `skip` when those span a plane (ties broken
 // by the faces' corners at v, as the filling does), else the plane of all of v's end tangents

@@ -14,24 +14,6 @@ Vec3 unit_or_zero(const Vec3& x) {
   return l > 0 ? x / l : Vec3(0);
 }
 
-// The corner normals of the faces at v summed (right-hand rule: outgoing x incoming tangent),
-// which say which side of the plane the faces face.
-Vec3 corner_normals(const Network& n, int v) {
-  Vec3 sum(0);
-  for (const NetworkFace& f : n.faces) {
-    const int sides = int(f.loop.size());
-    for (int i = 0; i < sides; ++i) {
-      if (f.loop[i] != v) continue;
-      const int out = edge_between(n, v, f.loop[(i + 1) % sides]);
-      const int back = edge_between(n, f.loop[(i + sides - 1) % sides], v);
-      if (out < 0 || back < 0) continue;
-      sum +=
-          glm::cross(unit_or_zero(end_tangent(n, out, v)), unit_or_zero(end_tangent(n, back, v)));
-    }
-  }
-  return sum;
-}
-
 }  // namespace
 
 std::optional<VertexPlane> vertex_plane(const Network& n, int v) {
@@ -49,7 +31,7 @@ std::optional<VertexPlane> vertex_plane(const Network& n, int v) {
     normal = glm::normalize(c);
   }
   plane.normal = *normal;
-  if (glm::dot(plane.normal, corner_normals(n, v)) < 0) plane.normal = -plane.normal;
+  if (glm::dot(plane.normal, corner_normal_sum(n, v)) < 0) plane.normal = -plane.normal;
   plane.normal += Vec3(0.0);  // -0 shown as 0 in the panel
   return plane;
 }
