@@ -110,7 +110,8 @@ double angle_deg(const Vec3& a, const Vec3& b) {
 SceneReport analyze_scene(const Scene& scene, const SceneSurfaces& ss, int curve_samples) {
   SceneReport r;
   for (std::size_t i = 0; i < scene.curves.size(); ++i)
-    r.curves.push_back(analyze_curve(scene.curves[i], curve_name(scene.curves[i], i), curve_samples));
+    r.curves.push_back(
+        analyze_curve(scene.curves[i], curve_name(scene.curves[i], i), curve_samples));
   r.joints = curve_joints(scene.curves);
   for (const SceneSurface& s : ss.surfaces) r.patches.push_back(analyze_surface(scene, s));
   for (const SharedEdge& e : ss.shared_edges) r.edges.push_back(analyze_edge(ss, e));

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "core/cad/exact_surfaces.hpp"
 #include "core/base/data_error.hpp"
+#include "core/cad/exact_surfaces.hpp"
 #include "core/network/network_filling.hpp"
 #include "core/patch/catmull_clark_patch.hpp"
 #include "core/patch/gap_fill_patch.hpp"

@@ -2,7 +2,8 @@
 
 namespace pl {
 
-// Solving p_k = f(k/3), k = 0..3, for the monomial coefficients (the matrix M_I of the interpolating cubic, docs/classic-types.md).
+// Solving p_k = f(k/3), k = 0..3, for the monomial coefficients (the matrix M_I of the
+// interpolating cubic, docs/classic-types.md).
 const double kInterpolatingMatrix[4][4] = {
     {1, 0, 0, 0}, {-5.5, 9, -4.5, 1}, {9, -22.5, 18, -4.5}, {-4.5, 13.5, -13.5, 4.5}};
 

@@ -6,14 +6,14 @@
 #include "core/mesh/mesh_export.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 
-#include "core/io/atomic_file.hpp"
 #include "core/base/data_error.hpp"
+#include "core/io/atomic_file.hpp"
 #include "core/mesh/finite_check.hpp"
 
 namespace pl {

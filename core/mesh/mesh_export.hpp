@@ -20,6 +20,7 @@ MeshFormat mesh_format_for(const std::filesystem::path& path);
 // patch and the domain parameter, and nothing is written. Polylines (free curves) go to OBJ
 // only, after the patches; the other formats leave them out.
 void export_meshes(const std::vector<SurfaceMesh>& meshes, const std::filesystem::path& path,
-                   const std::string& source = "", const std::vector<CurvePolyline>& polylines = {});
+                   const std::string& source = "",
+                   const std::vector<CurvePolyline>& polylines = {});
 
 }  // namespace pl

@@ -22,7 +22,7 @@ struct Scene {
   std::optional<Network> network;
   std::vector<ScenePatch> patches;
   std::vector<SceneCurve> curves;  // free curves (scene-format.md, section Curves)
-  std::string view_json;  // the editor's "view" object, kept verbatim (empty if absent)
+  std::string view_json;           // the editor's "view" object, kept verbatim (empty if absent)
 };
 
 }  // namespace pl

@@ -4,8 +4,8 @@
 
 #include "app/document/network_commands.hpp"
 #include "cli_test_util.hpp"
-#include "core/eval/scene_evaluation.hpp"
 #include "core/base/data_error.hpp"
+#include "core/eval/scene_evaluation.hpp"
 #include "core/io/scene_io.hpp"
 #include "core/network/network_filling.hpp"
 #include "core/network_test_util.hpp"

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <filesystem>
 
+#include "core/base/data_error.hpp"
 #include "core/domain/tessellation_cache.hpp"
 #include "core/eval/scene_surfaces.hpp"
-#include "core/base/data_error.hpp"
 #include "core/io/scene_io.hpp"
 #include "test_util.hpp"
 

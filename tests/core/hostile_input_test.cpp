@@ -12,9 +12,9 @@
 #include <fstream>
 
 #include "classic_test_util.hpp"
+#include "core/base/data_error.hpp"
 #include "core/geometry/differential_geometry.hpp"
 #include "core/io/atomic_file.hpp"
-#include "core/base/data_error.hpp"
 #include "core/io/gbp_io.hpp"
 #include "core/io/input_limits.hpp"
 #include "core/io/json_node.hpp"

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "core/io/atomic_file.hpp"
 #include "core/base/data_error.hpp"
+#include "core/io/atomic_file.hpp"
 #include "core/patch/bezier_patch.hpp"
 #include "test_util.hpp"
 

@@ -7,9 +7,9 @@
 
 #include "app/cli/work_limits.hpp"
 #include "core/analysis/scene_analysis.hpp"
+#include "core/base/data_error.hpp"
 #include "core/domain/tessellation_cache.hpp"
 #include "core/eval/scene_surfaces.hpp"
-#include "core/base/data_error.hpp"
 #include "core/io/gbp_io.hpp"
 #include "core/io/scene_io.hpp"
 #include "core/mesh/finite_check.hpp"

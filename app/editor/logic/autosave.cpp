@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <cerrno>
 
-#include "core/io/atomic_file.hpp"
 #include "core/base/data_error.hpp"
+#include "core/io/atomic_file.hpp"
 #include "core/io/json_node.hpp"
 #include "core/io/scene_io.hpp"
 
