@@ -162,6 +162,10 @@ class Editor:
     def press(self, p, button=1):
         """Moves there and presses; returns once the editor saw the press there."""
         x, y = self.move(p)
+        # The editor logs the cursor only while a button is held: give it a few frames to see
+        # the move first, or a press landing in the same frame counts as a drag from the old
+        # position (a right-click then opens no menu, a click becomes a camera gesture).
+        time.sleep(0.2)
         mark = self._act()
         xdo("mousedown", button)
         self.wait_line(rf"^pointer down {IMGUI_BUTTON[button]} ",
