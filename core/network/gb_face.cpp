@@ -165,13 +165,23 @@ std::unique_ptr<GBRibbonPatch> gb_face_patch(const FaceRibbons& input, GBDomainK
   return patch_over_chosen_domain(input, used, make);
 }
 
+FaceRibbons ribbons_as_filled(const FaceRibbons& input) {
+  for (double a : face_turning_angles(input))
+    if (!(a > -1e-9)) return orient_reflex_corners(input);
+  return input;
+}
+
+std::unique_ptr<GBInteriorPatch> gb_face_interior_patch(const FaceRibbons& input, int degree,
+                                                        std::span<const InteriorOffset> offsets,
+                                                        GBDomainKind* used) {
+  std::unique_ptr<GBRibbonPatch> filling = gb_face_patch(input, used);
+  return gb_interior_face_patch(ribbons_as_filled(input), std::move(*filling), degree, offsets);
+}
+
 std::unique_ptr<Patch> gb_face_patch(const FaceRibbons& input, int degree,
                                      std::span<const InteriorOffset> offsets, GBDomainKind* used) {
   if (degree == 3 && offsets.empty()) return gb_face_patch(input, used);
-  return patch_over_chosen_domain(
-      input, used, [&](const FaceRibbons& r, std::vector<Vec2> polygon) {
-        return gb_interior_face_patch(r, std::move(polygon), degree, offsets);
-      });
+  return gb_face_interior_patch(input, degree, offsets, used);
 }
 
 }  // namespace pl

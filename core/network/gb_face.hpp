@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/network/face_ribbons.hpp"
+#include "core/patch/gb/gb_interior_patch.hpp"
 #include "core/patch/gb/gb_ribbon_patch.hpp"
 
 namespace pl {
@@ -36,11 +37,19 @@ FaceRibbons orient_reflex_corners(const FaceRibbons& ribbons);
 std::unique_ptr<GBRibbonPatch> gb_face_patch(const FaceRibbons& ribbons,
                                              GBDomainKind* used = nullptr);
 
-// The same face with interior control (core/network/gb_face_interior.hpp): ribbons of degree
-// `degree`, the free points at their defaults plus `offsets`. Degree 3 without offsets is the
-// patch above, exactly.
+// The ribbons the GB patch of a face is built from: the input for a convex face, the reflex
+// corners oriented (orient_reflex_corners) otherwise.
+FaceRibbons ribbons_as_filled(const FaceRibbons& ribbons);
+
+// The same face with interior control (core/network/gb_face_interior.hpp): the patch above as
+// its default filling plus the offsets of the free points of the degree-d net. Degree 3 without
+// offsets gives the patch above itself (the interior form equals it and shows the same surface).
 std::unique_ptr<Patch> gb_face_patch(const FaceRibbons& ribbons, int degree,
                                      std::span<const InteriorOffset> offsets,
                                      GBDomainKind* used = nullptr);
+// Always the interior form (GBInteriorPatch), at any degree.
+std::unique_ptr<GBInteriorPatch> gb_face_interior_patch(const FaceRibbons& ribbons, int degree,
+                                                        std::span<const InteriorOffset> offsets,
+                                                        GBDomainKind* used = nullptr);
 
 }  // namespace pl

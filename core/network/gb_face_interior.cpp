@@ -1,37 +1,36 @@
 #include "core/network/gb_face_interior.hpp"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <memory>
+#include <stdexcept>
+#include <string>
 
-#include "core/domain/concave_polygon.hpp"
+#include "core/network/gb_face.hpp"
 #include "core/patch/gb/default_net.hpp"
-#include "core/patch/gb/gb_centred_ribbon_patch.hpp"
-#include "core/patch/gb/ribbon_elevation.hpp"
 
 namespace pl {
 
 namespace {
 
-// Rows 0 and 1 of one side elevated to degree d, row 1 for cross-boundary degree m:
-// row0 + (3/m) (inner - row0), the same cross derivative 3 (inner - boundary) as the cubic.
-std::array<std::vector<Vec3>, 2> g1_rows(const CubicRibbon& r, int d, int m) {
+// Rows 0 and 1 of one side elevated to degree d, row 1 for cross-boundary degree d (the .gbp
+// net's B^d_k(h)): row0 + (3/d) (inner - row0), the cubic's cross derivative 3 (inner - boundary).
+std::array<std::vector<Vec3>, 2> g1_rows(const CubicRibbon& r, int d) {
   std::vector<Vec3> b = BezierCurve(std::vector<Vec3>(r.boundary.begin(), r.boundary.end()))
                             .elevated_to(d)
                             .control_points();
   std::vector<Vec3> in = BezierCurve(std::vector<Vec3>(r.inner.begin(), r.inner.end()))
                              .elevated_to(d)
                              .control_points();
-  if (m != 3)
-    for (int j = 0; j <= d; ++j) in[j] = b[j] + (3.0 / m) * (in[j] - b[j]);
+  for (int j = 0; j <= d; ++j) in[j] = b[j] + (3.0 / d) * (in[j] - b[j]);
   return {std::move(b), std::move(in)};
 }
 
-}  // namespace
-
-std::vector<Vec3> gb_face_default_net(const FaceRibbons& ribbons, int d) {
+// gb_face_default_net of ribbons already as filled.
+std::vector<Vec3> default_net_as_filled(const FaceRibbons& ribbons, int d) {
   const int n = static_cast<int>(ribbons.sides.size());
   std::vector<std::array<std::vector<Vec3>, 2>> rows;
-  for (const CubicRibbon& r : ribbons.sides) rows.push_back(g1_rows(r, d, d));
+  for (const CubicRibbon& r : ribbons.sides) rows.push_back(g1_rows(r, d));
   std::vector<Vec3> net(GBPatch::point_count(n, d));
   const auto placed = std::make_unique<bool[]>(net.size());
   for (int i = 0; i < n; ++i) {
@@ -43,47 +42,94 @@ std::vector<Vec3> gb_face_default_net(const FaceRibbons& ribbons, int d) {
       net[gb_net_index(n, d, i, j, 1)] = p;
     }
   }
-  for (std::size_t k = 1; k < net.size(); ++k) placed[k] = gb_ring(n, d, k) < 2;
+  for (std::size_t k = 0; k < net.size(); ++k) placed[k] = k > 0 && gb_ring(n, d, k) < 2;
   return gb_default_points(n, d, std::move(net), std::span<const bool>(placed.get(), net.size()));
 }
 
-std::unique_ptr<Patch> gb_interior_face_patch(const FaceRibbons& r, std::vector<Vec2> vertices,
-                                              int d, std::span<const InteriorOffset> offsets) {
+void check_degree(int d) {
+  if (d < 3 || d > kMaxGBFaceDegree)
+    throw std::invalid_argument("a GB face's degree is 3 .. " + std::to_string(kMaxGBFaceDegree) +
+                                ", got " + std::to_string(d));
+}
+
+}  // namespace
+
+std::vector<Vec3> gb_face_default_net(const FaceRibbons& ribbons, int d) {
+  check_degree(d);
+  return default_net_as_filled(ribbons_as_filled(ribbons), d);
+}
+
+std::size_t interior_point_index(int n, int d, const InteriorOffset& at) {
+  return at.centre ? 0 : gb_net_index(n, d, at.side, at.j, at.layer);
+}
+
+InteriorOffset interior_point_name(int n, int d, std::size_t index) {
+  if (index == 0) return {.centre = true};
+  for (int k = 0; k < GBPatch::layers(d); ++k)
+    for (int i = 0; i < n; ++i)
+      for (int j = k; j <= d - 1 - k; ++j)
+        if (gb_net_index(n, d, i, j, k) == index) return {.side = i, .j = j, .layer = k};
+  throw std::invalid_argument("net index " + std::to_string(index) + " beyond the degree-" +
+                              std::to_string(d) + " net of " + std::to_string(n) + " sides");
+}
+
+std::unique_ptr<GBInteriorPatch> gb_interior_face_patch(const FaceRibbons& r, GBRibbonPatch filling,
+                                                        int d,
+                                                        std::span<const InteriorOffset> offsets) {
+  check_degree(d);
   const int n = static_cast<int>(r.sides.size());
   for (const InteriorOffset& o : offsets)
     if (const std::string why = interior_offset_problem(n, d, o); !why.empty())
       throw std::invalid_argument(why);
-  ConcavePolygonDomain domain(std::move(vertices));
-  const int l = std::max(2, gb_face_layers(d)), m = 2 * l - 1;
-  const std::vector<Vec3> defaults = gb_face_default_net(r, d);
+  const std::vector<Vec3> defaults = default_net_as_filled(r, d);
   std::vector<Vec3> net = defaults;
-  bool centre_moved = false;
+  for (const InteriorOffset& o : offsets) net[interior_point_index(n, d, o)] += o.by;
+  return std::make_unique<GBInteriorPatch>(std::move(filling), d, defaults, net);
+}
+
+std::vector<InteriorOffset> gb_face_offsets_for_degree(const FaceRibbons& ribbons, int old_degree,
+                                                       std::span<const InteriorOffset> offsets,
+                                                       int new_degree) {
+  check_degree(old_degree);
+  check_degree(new_degree);
+  if (offsets.empty()) return {};
+  const auto from = gb_face_interior_patch(ribbons, old_degree, offsets);
+  const auto to = gb_face_interior_patch(ribbons, new_degree, {});
+  const int n = from->sides();
+  const std::vector<std::size_t>& free = to->free_points();
+  if (free.empty()) return {};
+  // A sample of the domain with several times more points than unknowns.
+  std::vector<Vec2> xs;
+  for (int density = 16; density <= 256; density *= 2) {
+    xs = to->domain().tessellate(density).points;
+    if (xs.size() >= 6 * free.size()) break;
+  }
+  const Eigen::Index rows = static_cast<Eigen::Index>(xs.size());
+  std::vector<Jet> column(xs.size());
+  // The displacement field of the old degree, sum offset_p phi^old_p, at the samples.
+  Eigen::MatrixXd b = Eigen::MatrixXd::Zero(rows, 3);
   for (const InteriorOffset& o : offsets) {
-    if (o.centre) centre_moved = true;
-    net[o.centre ? 0 : gb_net_index(n, d, o.side, o.j, o.layer)] += o.by;
+    from->influence(interior_point_index(n, old_degree, o), xs, column);
+    for (Eigen::Index s = 0; s < rows; ++s)
+      for (int c = 0; c < 3; ++c) b(s, c) += column[s].f * o.by[c];
   }
-  std::vector<std::vector<std::vector<Vec3>>> ribbons(n);
-  for (int i = 0; i < n; ++i) {
-    auto [row0, row1] = g1_rows(r.sides[i], d, m);
-    ribbons[i] = {std::move(row0), std::move(row1)};
-    for (int k = 2; k < l; ++k) {
-      std::vector<Vec3>& row = ribbons[i].emplace_back(d + 1);
-      for (int j = 0; j <= d; ++j) row[j] = net[gb_net_index(n, d, i, j, k)];
-    }
+  Eigen::MatrixXd a(rows, static_cast<Eigen::Index>(free.size()));
+  for (std::size_t p = 0; p < free.size(); ++p) {
+    to->influence(free[p], xs, column);
+    for (Eigen::Index s = 0; s < rows; ++s) a(s, Eigen::Index(p)) = column[s].f;
   }
-  // Sides behind a reflex corner get layers until l_i >= d_i, where the blend has no pole
-  // (gb_face.cpp); each added layer keeps the ribbon's rows 0 and 1 data exactly.
-  for (int i : GBRibbonPatch::sides_without_positive_pair(domain))
-    while (static_cast<int>(ribbons[i].size()) < d) ribbons[i] = ribbon_with_layer(ribbons[i]);
-  GBRibbonPatch patch(std::move(domain), ribbons);
-  try {
-    return std::make_unique<GBCentredRibbonPatch>(patch, net[0], defaults[0]);
-  } catch (const std::invalid_argument&) {
-    // A face too concave for the central point's weight has no central point; only an offset
-    // that needs one is an error.
-    if (centre_moved) throw;
-    return std::make_unique<GBRibbonPatch>(std::move(patch));
+  const Eigen::MatrixXd x = a.colPivHouseholderQr().solve(b);
+  double largest = 0;
+  for (Eigen::Index p = 0; p < x.rows(); ++p) largest = std::max(largest, x.row(p).norm());
+  std::vector<InteriorOffset> out;
+  for (std::size_t p = 0; p < free.size(); ++p) {
+    const Eigen::Index r = Eigen::Index(p);
+    if (!(x.row(r).norm() > 1e-14 * largest)) continue;
+    InteriorOffset o = interior_point_name(n, new_degree, free[p]);
+    o.by = Vec3(x(r, 0), x(r, 1), x(r, 2));
+    out.push_back(o);
   }
+  return out;
 }
 
 }  // namespace pl

@@ -15,7 +15,7 @@
 #include "core/network/gb_face.hpp"
 #include "core/network/incremental_filling.hpp"
 #include "core/patch/gb/default_net.hpp"
-#include "core/patch/gb/gb_centred_ribbon_patch.hpp"
+#include "core/patch/gb/gb_interior_patch.hpp"
 #include "network_test_util.hpp"
 
 namespace pl {
@@ -119,15 +119,15 @@ TEST(GBFaceInterior, CentreOffsetMovesTheInteriorByItsBubbleWeight) {
   const InteriorOffset o{.centre = true, .by = by};
   const auto plain = gb_face_patch(ribbons[0], 3, {});
   const auto moved = gb_face_patch(ribbons[0], 3, std::span(&o, 1));
-  const auto* centred = dynamic_cast<const GBCentredRibbonPatch*>(moved.get());
+  const auto* centred = dynamic_cast<const GBInteriorPatch*>(moved.get());
   ASSERT_NE(centred, nullptr);
   double worst = 0;
   for (const Vec2& x : domain_samples(*plain)) {
     // Independent of evaluate(): the displacement is phi_0 by, phi_0 = prod h_i^2 / its value at
     // the centre, h_i from the domain's mean value coordinates.
-    const MeanValueParameters mv(centred->ribbon_patch().polygon().vertices());
+    const MeanValueParameters mv(centred->filling().polygon().vertices());
     const auto prod_h2 = [&](Vec2 y) {
-      for (const Vec2& v : centred->ribbon_patch().polygon().vertices())
+      for (const Vec2& v : centred->filling().polygon().vertices())
         if (v == y) return 0.0;
       std::vector<Jet> lam(5), h(5);
       mv.evaluate(y, lam, {}, h);
@@ -183,20 +183,15 @@ TEST(GBFaceInterior, OffsetsFollowTheBoundary) {
     const auto ribbons = build_face_ribbons(net, topo, projected);
     const std::vector<Vec3> defaults = gb_face_default_net(ribbons[0], 6);
     const auto patch = gb_face_patch(ribbons[0], 6, pent.offsets);
-    const auto& c = dynamic_cast<const GBCentredRibbonPatch&>(*patch);
-    const GBRibbonPatch& r = c.ribbon_patch();
+    const auto& c = dynamic_cast<const GBInteriorPatch&>(*patch);
     double worst = 0;
     for (const InteriorOffset& o : pent.offsets) {
-      if (o.centre) {
-        worst =
-            std::max(worst, glm::length(c.control_point(c.centre_index()) - (defaults[0] + o.by)));
-        continue;
-      }
-      const Vec3 want = defaults[gb_net_index(5, 6, o.side, o.j, o.layer)] + o.by;
-      worst = std::max(worst, glm::length(r.point(o.side, o.j, o.layer) - want));
+      const std::size_t k = o.centre ? 0 : gb_net_index(5, 6, o.side, o.j, o.layer);
+      worst = std::max(worst, glm::length(c.control_point(k) - (defaults[k] + o.by)));
     }
     // an unmoved free point sits at its default
-    worst = std::max(worst, glm::length(r.point(3, 3, 2) - defaults[gb_net_index(5, 6, 3, 3, 2)]));
+    const std::size_t still = gb_net_index(5, 6, 3, 3, 2);
+    worst = std::max(worst, glm::length(c.control_point(still) - defaults[still]));
     return std::pair{worst, defaults};
   };
   const auto [before, defaults_before] = check(n);
