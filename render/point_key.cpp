@@ -12,7 +12,8 @@ namespace pl {
 
 namespace {
 
-constexpr const char* kKindNames[4] = {"boundary", "inner", "twin", "central"};
+constexpr const char* kKindNames[kControlPointKinds] = {"boundary", "inner", "twin", "central",
+                                                        "free interior"};
 constexpr const char* kArrowNames[2] = {"tangent", "twist"};
 
 bool has(uint32_t bits, int bit) {
@@ -22,7 +23,12 @@ bool has(uint32_t bits, int bit) {
 }  // namespace
 
 PointKeyEntries PointKeyEntries::all() {
-  return {0xFFu, 0x3u};
+  uint32_t styles = 0;
+  for (const PointRole role : {PointRole::Editable, PointRole::Derived})
+    for (int kind = 0; kind < kControlPointKinds; ++kind)
+      if (role == PointRole::Editable || ControlPointKind(kind) != ControlPointKind::FreeInterior)
+        styles |= 1u << point_style_tag(ControlPointKind(kind), role);  // free points: editable
+  return {styles, 0x3u};
 }
 
 PointKeyEntries PointKeyEntries::of(const DrawScene& scene) {
@@ -34,7 +40,7 @@ PointKeyLayout point_key_layout(const PointKeyEntries& e, double scale, double p
   k.scale = scale;
   k.pixel_scale = pixel_scale;
   for (const PointRole role : {PointRole::Editable, PointRole::Derived})
-    for (int kind = 0; kind < 4; ++kind)
+    for (int kind = 0; kind < kControlPointKinds; ++kind)
       if (has(e.point_styles, point_style_tag(ControlPointKind(kind), role)))
         k.rows.push_back(
             {std::string(kKindNames[kind]) + (role == PointRole::Derived ? ", derived" : ""), kind,

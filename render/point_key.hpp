@@ -20,7 +20,8 @@ struct PointKeyEntries {
   uint32_t point_styles = 0;
   uint32_t arrow_kinds = 0;
   bool empty() const { return point_styles == 0 && arrow_kinds == 0; }
-  static PointKeyEntries all();  // every kind in both roles, both arrow kinds
+  static PointKeyEntries all();  // every kind in both roles (free interior: editable only),
+                                 // both arrow kinds
   static PointKeyEntries of(const DrawScene& scene);
   PointKeyEntries& operator|=(const PointKeyEntries& o) {
     point_styles |= o.point_styles;

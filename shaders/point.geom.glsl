@@ -14,7 +14,7 @@ out vec2 f_uv;          // -1 .. 1 over the square
 void main() {
   vec4 p = gl_in[0].gl_Position;
   if (p.w <= 0.0) return;
-  float size = g_tag[0] >= 3.5 ? u_size * u_derived_scale : u_size;
+  float size = g_tag[0] >= 7.5 ? u_size * u_derived_scale : u_size;
   // Half the size plus a pixel of feather, and room for the triangle's corners.
   vec2 r = vec2(0.8 * size + 1.0) / u_viewport_size * 2.0 * p.w;
   for (int i = 0; i < 4; ++i) {

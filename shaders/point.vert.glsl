@@ -5,7 +5,7 @@
 // keeping points on or just under the surface whole, while a point well behind a surface still
 // fails the depth test and is drawn in the faded pass.
 layout(location = 0) in vec3 a_position;
-layout(location = 1) in float a_tag;  // point style: kind + 4 * role
+layout(location = 1) in float a_tag;  // point style: kind + 8 * role
 uniform mat4 u_view;
 uniform mat4 u_projection;
 uniform vec2 u_viewport_size;  // pixels

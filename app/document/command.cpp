@@ -33,7 +33,8 @@ std::string MovePointsCommand::merge_key() const {
 }
 
 void move_points(Scene& scene, const std::vector<PointRef>& refs,
-                 const std::vector<Vec3>& positions, HandleMode mode) {
+                 const std::vector<Vec3>& positions, HandleMode mode,
+                 const std::vector<std::optional<Vec3>>& free_defaults) {
   // Vertices first: they carry their handles, which may then move themselves.
   for (std::size_t i = 0; i < refs.size(); ++i)
     if (refs[i].kind == PointRef::Kind::NetworkVertex)
@@ -57,6 +58,13 @@ void move_points(Scene& scene, const std::vector<PointRef>& refs,
       net.edges[r.object].handles[r.index] =
           constrained_handle(net, r.object, r.index, positions[i], others);
     }
+  }
+  for (std::size_t i = 0; i < refs.size(); ++i) {
+    if (refs[i].kind != PointRef::Kind::FreePoint) continue;
+    if (i < free_defaults.size() && free_defaults[i])
+      set_free_point_offset(scene, refs[i], positions[i] - *free_defaults[i]);
+    else
+      set_point_position(scene, refs[i], positions[i]);
   }
 }
 

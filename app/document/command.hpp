@@ -9,6 +9,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,8 +54,11 @@ class MovePointsCommand final : public Command {
 };
 
 // Moves the points of `refs` to `positions` in `scene` (MovePointsCommand's edit, also each
-// frame of a drag). Every ref must exist.
+// frame of a drag). Every ref must exist. Free points move last, against the defaults of the
+// network as moved; `free_defaults` (one per ref, or empty) gives them when known (a drag that
+// moves no network point), so a frame does not rebuild them.
 void move_points(Scene& scene, const std::vector<PointRef>& refs,
-                 const std::vector<Vec3>& positions, HandleMode mode);
+                 const std::vector<Vec3>& positions, HandleMode mode,
+                 const std::vector<std::optional<Vec3>>& free_defaults = {});
 
 }  // namespace pl

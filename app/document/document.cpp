@@ -93,6 +93,13 @@ void Document::begin_drag(std::vector<PointRef> points, HandleMode mode) {
   d.mode = mode;
   for (const PointRef& p : d.points) d.start.push_back(point_position(scene_, p));
   d.current = d.start;
+  const bool network_moves = std::any_of(d.points.begin(), d.points.end(), [](const PointRef& p) {
+    return p.kind == PointRef::Kind::NetworkVertex || p.kind == PointRef::Kind::EdgeHandle;
+  });
+  for (const PointRef& p : d.points)
+    d.free_defaults.push_back(p.kind == PointRef::Kind::FreePoint && !network_moves
+                                  ? std::optional(free_point_default(scene_, p))
+                                  : std::nullopt);
   if (scene_.network) {
     const Network& net = *scene_.network;
     std::vector<int> vertices, edges;
@@ -128,7 +135,7 @@ void Document::drag_to(const std::vector<Vec3>& positions) {
   if (!drag_ || positions.size() != drag_->points.size())
     throw std::invalid_argument("drag_to needs one position per dragged point");
   restore_drag_start();
-  move_points(scene_, drag_->points, positions, drag_->mode);
+  move_points(scene_, drag_->points, positions, drag_->mode, drag_->free_defaults);
   drag_->current = positions;
   ++revision_;
 }

@@ -82,6 +82,9 @@ class Document {
     std::vector<std::pair<int, Vec3>> vertices;
     std::vector<std::pair<int, std::optional<Vec3>>> normals;
     std::vector<std::pair<int, std::array<Vec3, 2>>> handles;
+    // Per dragged point: a free point's default position when the drag moves no network point
+    // (it stays put, so a frame only writes offsets), else nullopt.
+    std::vector<std::optional<Vec3>> free_defaults;
     Scene before;
   };
   struct Step {

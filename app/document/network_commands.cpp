@@ -186,7 +186,14 @@ void SplitEdgeCommand::apply(Scene& scene) {
 void SetFaceSchemeCommand::apply(Scene& scene) {
   Network& net = network_of(scene);
   set_face_scheme(net, face_, scheme_);
-  check_network(net, net.faces[face_].loop);
+  NetworkFace& face = net.faces[face_];
+  if (resolve_scheme(face, std::nullopt) == FaceScheme::Gregory &&
+      (face.degree != 3 || !face.offsets.empty())) {
+    face.degree = 3;
+    face.offsets.clear();
+    interior_dropped_ = true;
+  }
+  check_network(net, face.loop);
 }
 
 void SetFaceNameCommand::apply(Scene& scene) {

@@ -117,18 +117,22 @@ class SplitEdgeCommand final : public Command {
   std::string label_;
 };
 
-// Sets a face's filling scheme; Gregory is refused on faces of other than 3 or 4 sides.
+// Sets a face's filling scheme; Gregory is refused on faces of other than 3 or 4 sides. A face
+// that becomes Gregory loses its interior edits (degree and offsets: a Gregory face has no free
+// interior), and the label says so.
 class SetFaceSchemeCommand final : public Command {
  public:
   SetFaceSchemeCommand(int face, FaceScheme scheme) : face_(face), scheme_(scheme) {}
   void apply(Scene& scene) override;
   std::string label() const override {
-    return "face " + std::to_string(face_) + " scheme " + scheme_keyword(scheme_);
+    return "face " + std::to_string(face_) + " scheme " + scheme_keyword(scheme_) +
+           (interior_dropped_ ? " (its interior edits dropped)" : "");
   }
 
  private:
   int face_;
   FaceScheme scheme_;
+  bool interior_dropped_ = false;
 };
 
 class SetFaceNameCommand final : public Command {

@@ -221,8 +221,12 @@ void Editor::draw_interface(const ColorRange& range) {
   draw_menu_bar(actions_);
   const EditorLayout l = layout();
   ToolContext tools = tool_context();
-  const SidePanel panel{prefs_,      views_, session_.doc(), selection_, actions_, continuity_,
-                        work_plane_, tools_, range,          ui_scale_,  &tools};
+  SidePanel panel{prefs_,      views_, session_.doc(), selection_, actions_, continuity_,
+                  work_plane_, tools_, range,          ui_scale_,  &tools,   {}};
+  if (debugging())
+    panel.item_probe = [this](const std::string& label, float x0, float y0, float x1, float y1) {
+      report_panel_item(label, x0, y0, x1, y1);
+    };
   if (draw_side_panel(panel, l.menu_height, l.status_height)) rebuild_views(views_.compare());
 
   StatusFigures figures;

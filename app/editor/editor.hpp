@@ -19,6 +19,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -151,6 +152,8 @@ class Editor {
   void report_debug_items();
   void report_selection_change();
   void report_menu_item(const std::string& label, float x0, float y0, float x1, float y1);
+  // A side-panel button's centre, printed when it appears or moves.
+  void report_panel_item(const std::string& label, float x0, float y0, float x1, float y1);
   void report_state();
   bool debugging() const { return !options_.debug_items.empty() || options_.debug_state; }
 
@@ -191,6 +194,7 @@ class Editor {
     std::string state;        // the last state report (printed again only when it changes)
     std::string message;      // the last status message printed
     bool text_input = false;  // a text field had the keyboard
+    std::map<std::string, std::string> panel_items;  // label -> the line last printed
   } debug_;
   RenamePopup rename_;
 

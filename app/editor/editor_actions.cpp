@@ -7,6 +7,7 @@
 #include "app/editor/logic/add_vertex_tool.hpp"
 #include "app/editor/logic/authoring_actions.hpp"
 #include "app/editor/logic/curve_actions.hpp"
+#include "app/editor/logic/interior_actions.hpp"
 #include "app/editor/logic/make_face_tool.hpp"
 #include "app/editor/logic/patch_actions.hpp"
 #include "app/editor/logic/selection_actions.hpp"
@@ -132,6 +133,7 @@ void Editor::register_actions() {
   r.add(std::move(vertex_here));
   add_authoring_actions(r, session_.doc(), selection_, hooks);
   add_patch_actions(r, session_.doc(), selection_, say);
+  add_interior_actions(r, session_.doc(), selection_, say);
   CurveActionHooks curve_hooks;
   curve_hooks.say = say;
   // A right-click menu acts where it was opened: on a point there, else on the work plane.

@@ -6,6 +6,8 @@
 //   debug-edge NAME X Y window WX WY       NAME as "face 1", "edge 3", "patch 0")
 //   selection: ITEM, ITEM, ...            (after every change; "selection: none" when empty)
 //   menu-item LABEL X Y window WX WY      (the centre of each context-menu item, once laid out)
+//   panel-item LABEL X Y window WX WY     (the centre of a side-panel button, when it appears or
+//                                          moves: the interior buttons of a face)
 //   saved PATH revision N
 // With --debug-state, also (window pixels relative to the window, like the lines above):
 //   pointer down|up B X Y [shift] [ctrl] [alt]   (as the frame saw the press or release)
@@ -20,6 +22,8 @@
 //   curve-point C K X Y                          (control point K of free curve C)
 //   edge I X Y | edge I hidden                   (a pixel that picks the edge's curve)
 //   face I X Y | face I hidden                   (a pixel that picks the face's surface)
+//   free-point F NAME X Y                        (free point NAME of GB face F as drawn:
+//                                                 "centre" or "S,J,K"; shown points only)
 //   knob V X Y                                   (the normal knob of a selected vertex)
 //   state-end R
 #define GLFW_INCLUDE_NONE
@@ -85,6 +89,19 @@ void Editor::report_menu_item(const std::string& label, float x0, float y0, floa
   glfwGetWindowPos(window_.handle(), &wx, &wy);
   std::printf("menu-item %s %.1f %.1f window %d %d\n", label.c_str(), 0.5 * (x0 + x1),
               0.5 * (y0 + y1), wx, wy);
+  std::fflush(stdout);
+}
+
+void Editor::report_panel_item(const std::string& label, float x0, float y0, float x1, float y1) {
+  int wx = 0, wy = 0;
+  glfwGetWindowPos(window_.handle(), &wx, &wy);
+  char line[256];
+  std::snprintf(line, sizeof line, "panel-item %s %.1f %.1f window %d %d", label.c_str(),
+                0.5 * (x0 + x1), 0.5 * (y0 + y1), wx, wy);
+  std::string& last = debug_.panel_items[label];
+  if (last == line) return;
+  last = line;
+  std::printf("%s\n", line);
   std::fflush(stdout);
 }
 
@@ -160,6 +177,18 @@ void Editor::report_state() {
         << pixel(find_pixel_for(pickers_[0], picks, camera, rects[0], SelectionItem::face(int(f)),
                                 {d.control_net, d.network_curves}))
         << "\n";
+  if (views_.ready()) {
+    const ScenePoints& points = views_.main()->shown().points();
+    for (std::size_t i = 0; i < points.positions.size(); ++i) {
+      const auto& r = points.refs[i];
+      if (!r || r->kind != PointRef::Kind::FreePoint || !points.shown(i)) continue;
+      out << "free-point " << r->object << " "
+          << (r->index < 0 ? std::string("centre")
+                           : std::to_string(r->index) + "," + std::to_string(r->j) + "," +
+                                 std::to_string(r->layer))
+          << " " << pixel(project_to_window(camera, rects[0], points.positions[i])) << "\n";
+    }
+  }
   if (tools_.active_index() == 0)
     for (const PlaneHandle& h : plane_handles(scene, selection_, camera, rects[0], ui_scale_))
       out << "knob " << h.vertex << " " << pixel(project_to_window(camera, rects[0], h.knob))

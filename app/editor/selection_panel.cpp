@@ -1,14 +1,15 @@
 // The Selection section: the properties of a single selected object (face: sides, scheme,
-// name; edge: name, ends, length, faces; vertex: tangent plane fitted or fixed, its normal;
-// patch: type), or a summary of several, and typed coordinates for the selected points. Every
-// field that changes the document runs a command (one undo step) when it is left or Enter is
-// pressed; a refusal shows in the status bar.
+// name, a GB face's interior: degree, moved points, reset; edge: name, ends, length, faces; vertex:
+// tangent plane fitted or fixed, its normal; patch: type), or a summary of several, and typed
+// coordinates for the selected points. Every field that changes the document runs a command (one
+// undo step) when it is left or Enter is pressed; a refusal shows in the status bar.
 #include <imgui.h>
 
 #include <cmath>
 #include <cstring>
 
 #include "app/document/network_commands.hpp"
+#include "app/editor/logic/interior_actions.hpp"
 #include "app/editor/logic/plane_handles.hpp"
 #include "app/editor/logic/selection_properties.hpp"
 #include "app/editor/side_panel.hpp"
@@ -75,12 +76,56 @@ void name_field(const SidePanel& p, const std::string& name, const std::string& 
   if (ImGui::IsItemDeactivatedAfterEdit() && name != edit) run(p, command(edit));
 }
 
+// A button running action `id` (disabled when the action is), reported to scripts by `label`.
+void action_button(const SidePanel& p, const char* id, const char* label) {
+  const Action* a = p.actions.find(id);
+  if (!a) return;
+  ImGui::BeginDisabled(!p.actions.is_enabled(*a));
+  if (ImGui::Button(label)) p.actions.run(id);
+  ImGui::EndDisabled();
+  if (p.item_probe) {
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    p.item_probe(label, lo.x, lo.y, hi.x, hi.y);
+  }
+}
+
+// The interior of face `face`: a GB face's degree (raised and lowered by buttons), how many of
+// its free points are moved, Reset Interior; a Gregory face says why it has none.
+void interior_section(const SidePanel& p, int face) {
+  const std::optional<InteriorSummary> s = interior_summary(p.doc.scene(), face);
+  if (!s) return;
+  ImGui::Separator();
+  if (!s->has_interior) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped(
+        "No free interior: a Gregory face's inner points are all G1 data (the twins follow the "
+        "network). Set the scheme to GB to shape its inside.");
+    ImGui::PopStyleColor();
+    return;
+  }
+  ImGui::TextDisabled("degree");
+  ImGui::SameLine(ImGui::GetFontSize() * 6);
+  ImGui::Text("%d", s->degree);
+  ImGui::SameLine();
+  action_button(p, "face.degree.lower", "Lower degree");
+  ImGui::SameLine();
+  action_button(p, "face.degree.raise", "Raise degree");
+  field("free points", std::to_string(s->free_points) + ", " + std::to_string(s->moved) + " moved");
+  action_button(p, "face.interior.reset", "Reset interior");
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped(
+      "Drag the hexagon points (the free points) in the view; the boundary and the G1 joins "
+      "stay.");
+  ImGui::PopStyleColor();
+}
+
 void face_section(const SidePanel& p, const FaceProperties& f) {
   name_field(p, f.name, "face" + std::to_string(f.face),
              [&](const std::string& n) { return std::make_shared<SetFaceNameCommand>(f.face, n); });
   field("sides", std::to_string(f.sides));
   scheme_row(p);
   if (f.scheme == FaceScheme::Auto) field("filled as", scheme_name(f.resolved));
+  interior_section(p, f.face);
 }
 
 void edge_section(const SidePanel& p, const EdgeProperties& e) {
@@ -208,6 +253,8 @@ void draw_selection_section(const SidePanel& p) {
     ImGui::TextDisabled("Arrows nudge (Shift x10, Alt x0.1).");
     if (points[0].kind == PointRef::Kind::CurvePoint)
       draw_curve_section(p, points[0].object, points[0].index);
+    if (points.size() == 1 && points[0].kind == PointRef::Kind::FreePoint)
+      interior_section(p, points[0].object);
   }
 }
 

@@ -3,6 +3,9 @@
 // through a command or an action; the sections only lay out widgets. ImGui code.
 #pragma once
 
+#include <functional>
+#include <string>
+
 #include "app/editor/logic/actions.hpp"
 #include "app/editor/logic/continuity_monitor.hpp"
 #include "app/editor/logic/document_session.hpp"
@@ -25,6 +28,8 @@ struct SidePanel {
   ColorRange range;  // the colour range shown (a "fixed range" starts from it)
   float ui_scale = 1;
   ToolContext* tool_context = nullptr;  // what the active tool's options act through
+  // Scripts (--debug-state): told where a panel button is (its label and window rectangle).
+  std::function<void(const std::string&, float, float, float, float)> item_probe;
 };
 
 // Draws the panel at the right of the window, between the bars. Returns true when the

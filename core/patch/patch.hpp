@@ -16,7 +16,10 @@
 namespace pl {
 
 // How a control point is drawn and what it means to the designer.
-enum class ControlPointKind { Boundary, Inner, Twin, Central };
+// FreeInterior: a free interior point of a network GB face (moved by its stored offset), shown by
+// the editor; no patch returns it.
+enum class ControlPointKind { Boundary, Inner, Twin, Central, FreeInterior };
+inline constexpr int kControlPointKinds = 5;
 
 class Patch {
  public:

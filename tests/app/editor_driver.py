@@ -22,6 +22,19 @@ def xdo(*args):
     subprocess.run(["xdotool", *[str(a) for a in args]], check=True)
 
 
+def check(condition, message):
+    if not condition:
+        raise EditorError("FAIL: " + message)
+
+
+def shot(name):
+    """With E2E_SHOTS=DIR, a screenshot of the screen as it is now (for looking at the steps)."""
+    if os.environ.get("E2E_SHOTS"):
+        time.sleep(0.5)  # a frame or two for the hover; only pictures depend on it
+        subprocess.run(["import", "-window", "root", os.path.join(os.environ["E2E_SHOTS"],
+                                                                   name + ".png")], check=True)
+
+
 class State:
     """One state report: counts, tool and the window pixels of everything clickable."""
 
@@ -33,6 +46,7 @@ class State:
         self.revision = int(self.fields["revision"])
         self.vertices, self.edges, self.faces, self.knobs = {}, {}, {}, {}
         self.curve_points = {}  # (curve, point) -> pixel
+        self.free_points = {}  # (face, "centre" or "S,J,K") -> pixel of a GB face's free point
         for line in lines[1:]:
             w = line.split()
             if w[0] == "view":
@@ -45,6 +59,9 @@ class State:
                 table = {"vertex": self.vertices, "edge": self.edges, "face": self.faces,
                          "knob": self.knobs}[w[0]]
                 table[int(w[1])] = where
+            elif w[0] == "free-point":
+                self.free_points[(int(w[1]), w[2])] = (
+                    None if w[3] == "hidden" else (float(w[3]), float(w[4])))
             elif w[0] == "curve-point":
                 self.curve_points[(int(w[1]), int(w[2]))] = (
                     None if w[3] == "hidden" else (float(w[3]), float(w[4])))

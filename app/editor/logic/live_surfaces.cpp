@@ -36,7 +36,7 @@ int LiveSurfaces::segments_of(std::size_t edge) const {
 
 void LiveSurfaces::rebuild_overlays(const Scene& scene) {
   draw_.closed_orientation = closed_orientation(scene, evaluation_.surfaces(), draw_.surfaces);
-  points_ = collect_scene_points(scene, evaluation_.surfaces());
+  points_ = collect_scene_points(scene, evaluation_.surfaces(), &evaluation_.filling());
   ++points_layout_;
   fill_overlays(scene, points_, draw_);
   if (scene.network && curve_segments_.size() != scene.network->edges.size())
@@ -82,7 +82,10 @@ bool LiveSurfaces::update_overlays(const Scene& scene, const std::vector<int>& c
     const SceneSurface& s = surfaces[i];
     if (s.face >= 0) {
       const int g = points_.face_group[i];
-      if (g < 0 || !update_group(points_, std::size_t(g), s.evaluator->patch())) return false;
+      if (g < 0 || !update_group(points_, std::size_t(g), s.evaluator->patch()) ||
+          !update_free_points(points_, std::size_t(g), scene, s.evaluator->patch(),
+                              evaluation_.filling(), cross_scratch_))
+        return false;
     } else if (s.patch >= 0 && s.patch < int(scene.patches.size())) {
       if (!update_group(points_, std::size_t(points_.patch_group[s.patch]),
                         *scene.patches[s.patch].patch))

@@ -70,8 +70,9 @@ class LiveSurfaces {
   // Every edge's control points as last drawn.
   std::vector<std::array<Vec3, 4>> edge_points_;
   FreeCurveLines free_lines_;
-  std::size_t curve_points_at_ = 0;  // the first free-curve point in points_
-  std::vector<int> curve_segments_;  // per edge, or empty: all kCurveSegments
+  std::vector<EdgeCrossTangents> cross_scratch_;  // the free points' update (scene_points.hpp)
+  std::size_t curve_points_at_ = 0;               // the first free-curve point in points_
+  std::vector<int> curve_segments_;               // per edge, or empty: all kCurveSegments
   uint64_t revision_ = 0;
   uint64_t points_layout_ = 0;
   double last_sync_ms_ = 0;

@@ -48,6 +48,9 @@ NetFocus net_focus(const std::vector<PointRef>& points, const std::vector<int>& 
         break;
       case PointRef::Kind::CurvePoint:  // curve points are never thinned out
         break;
+      case PointRef::Kind::FreePoint:  // shows its face's net
+        f.faces.push_back(r.object);
+        break;
     }
   }
   return f;
@@ -150,6 +153,10 @@ NetThinning thin_control_net(const ScenePoints& pts, const SceneSurfaces& surfac
     for (std::size_t j = 0; j < pts.groups[g].ks.size(); ++j)
       if (pts.groups[g].first + j < point_group.size())
         point_group[pts.groups[g].first + j] = int(g);
+  for (std::size_t g = 0; g < pts.groups.size(); ++g)  // a GB face's free points with its net
+    for (std::size_t j = 0; j < pts.groups[g].free_count; ++j)
+      if (pts.groups[g].free_first + j < point_group.size())
+        point_group[pts.groups[g].free_first + j] = int(g);
 
   std::vector<uint8_t> hidden(pts.positions.size(), 0);
   bool any = false;

@@ -4,7 +4,11 @@
 #include <unordered_set>
 
 #include "app/cli/draw_scene_builder.hpp"
+#include "core/base/data_error.hpp"
+#include "core/network/gb_face_free_points.hpp"
 #include "core/patch/control_net_topology.hpp"
+#include "core/patch/gb/default_net.hpp"
+#include "core/patch/gb/gb_interior_patch.hpp"
 
 namespace pl {
 
@@ -37,19 +41,64 @@ class SegmentSet {
 
 using PointIndex = std::map<std::array<double, 3>, uint32_t>;
 
+// What a face with interior control shows: its degree-d GB net (the G1 rings 0 and 1 and the
+// free points at default + offset), with the rows, spokes and centre links of a .gbp net; its
+// default filling's points and the free points' stored defaults (the rest of its control points)
+// are not drawn.
+struct ShownNet {
+  std::size_t count = 0;  // points [0, count) shown (the centre left out when there is none)
+  ControlNetTopology topology;
+};
+
+ShownNet shown_net(const Patch& patch) {
+  const auto* p = dynamic_cast<const GBInteriorPatch*>(&patch);
+  if (!p) return {patch.size(), control_net_topology(patch)};
+  ShownNet out{p->net_size(), {}};
+  out.topology.is_vector.assign(patch.size(), false);
+  const int n = p->sides(), d = p->degree(), l = gb_face_layers(d);
+  auto& s = out.topology.segments;
+  auto add = [&](std::size_t a, std::size_t b) {
+    if (a != b) s.push_back({uint32_t(std::min(a, b)), uint32_t(std::max(a, b))});
+  };
+  for (int i = 0; i < n; ++i) {
+    auto at = [&](int j, int k) { return gb_net_index(n, d, i, j, k); };
+    for (int k = 0; k < l; ++k)
+      for (int j = 0; j <= d; ++j) {
+        if (j < d) add(at(j, k), at(j + 1, k));      // rows
+        if (k + 1 < l) add(at(j, k), at(j, k + 1));  // spokes
+      }
+    if (p->has_centre()) {
+      add(at(d / 2, l - 1), 0);
+      add(at((d + 1) / 2, l - 1), 0);
+    }
+  }
+  return out;
+}
+
 // Adds one patch's points as a group: positions of `role` (refs from make_ref, or none), its net
-// lines and arrows. With `shared`, a boundary point found there exactly is that network point.
-void add_group(ScenePoints& s, SegmentSet& segments, const Patch& patch, PointOwner owner,
-               bool editable, int patch_index, const PointIndex* shared) {
-  const ControlNetTopology t = control_net_topology(patch);
+// lines and arrows. With `shared`, a boundary point found there exactly is that network point;
+// with `own`, any point found there exactly is that point (a face's free points).
+ScenePoints::Group& add_group(ScenePoints& s, SegmentSet& segments, const Patch& patch,
+                              PointOwner owner, bool editable, int patch_index,
+                              const PointIndex* shared, const PointIndex* own = nullptr) {
+  const ShownNet shown = shown_net(patch);
+  const ControlNetTopology& t = shown.topology;
+  const auto* interior = dynamic_cast<const GBInteriorPatch*>(&patch);
   ScenePoints::Group g;
   g.owner = owner;
   g.first = s.positions.size();
   g.first_arrow = s.arrows.size();
   std::vector<uint32_t> id(patch.size(), 0);
-  for (std::size_t k = 0; k < patch.size(); ++k) {
-    if (t.is_vector[k]) continue;
+  for (std::size_t k = 0; k < shown.count; ++k) {
+    if (t.is_vector[k] || (k == 0 && interior && !interior->has_centre())) continue;
     const Vec3 p = patch.control_point(k);
+    if (own) {
+      const auto it = own->find({p.x, p.y, p.z});
+      if (it != own->end()) {
+        id[k] = it->second;
+        continue;
+      }
+    }
     if (shared && patch.kind(k) == ControlPointKind::Boundary) {
       const auto it = shared->find({p.x, p.y, p.z});
       if (it != shared->end()) {
@@ -69,6 +118,30 @@ void add_group(ScenePoints& s, SegmentSet& segments, const Patch& patch, PointOw
     g.arrow_data.push_back(a);
   }
   s.groups.push_back(std::move(g));
+  return s.groups.back();
+}
+
+// The free points of face f as the scene has them, from the filling's topology and planes; none
+// for a face filled otherwise than GB (a Gregory face, or a GB face seen in the Gregory panel
+// of the comparison) or whose defaults cannot be built.
+std::vector<FreePoint> face_free_points(const Scene& scene, const Patch& patch,
+                                        const NetworkTopology& topology,
+                                        const std::vector<TangentPlane>& planes, int f,
+                                        std::vector<EdgeCrossTangents>& cross) {
+  if (!is_gb_face(scene, f) || patch.type().starts_with("gregory")) return {};
+  const NetworkFace& face = scene.network->faces[f];
+  std::vector<FreePoint> out;
+  try {
+    out = gb_face_free_points(face_ribbons_from_planes(*scene.network, topology, planes, f, cross),
+                              face.degree, face.offsets);
+  } catch (const std::exception&) {
+    return {};
+  }
+  // A face too concave for the central point's weight has none.
+  const auto* interior = dynamic_cast<const GBInteriorPatch*>(&patch);
+  if (interior && !interior->has_centre())
+    std::erase_if(out, [](const FreePoint& p) { return p.name.centre; });
+  return out;
 }
 
 }  // namespace
@@ -85,7 +158,8 @@ int ScenePoints::find(const PointRef& ref) const {
   return -1;
 }
 
-ScenePoints collect_scene_points(const Scene& scene, const SceneSurfaces& surfaces) {
+ScenePoints collect_scene_points(const Scene& scene, const SceneSurfaces& surfaces,
+                                 const IncrementalFilling* filling) {
   ScenePoints s;
   SegmentSet segments(s);
   PointIndex network_points;
@@ -122,8 +196,21 @@ ScenePoints collect_scene_points(const Scene& scene, const SceneSurfaces& surfac
     add_group(s, segments, *scene.patches[p].patch, {PointOwner::Kind::Patch, int(p)}, true, int(p),
               nullptr);
   }
-  // A network face: its boundary points are the network's (listed above); the rest are derived
-  // from the network and only shown.
+  // A network face: its boundary points are the network's (listed above); a GB face's free
+  // points are the user's; the rest are derived from the network and only shown.
+  NetworkTopology own_topology;
+  std::vector<TangentPlane> own_planes;
+  if (scene.network && !filling) {
+    try {
+      own_topology = validate_network(*scene.network, "scene");
+      own_planes = vertex_tangent_planes(*scene.network, own_topology);
+    } catch (const DataError&) {
+      own_topology = {};
+    }
+  }
+  const NetworkTopology& topology = filling ? filling->topology() : own_topology;
+  const std::vector<TangentPlane>& planes = filling ? filling->planes() : own_planes;
+  std::vector<EdgeCrossTangents> cross;
   for (std::size_t i = 0; i < surfaces.surfaces.size(); ++i) {
     const SceneSurface& surface = surfaces.surfaces[i];
     if (surface.face < 0) {
@@ -131,8 +218,23 @@ ScenePoints collect_scene_points(const Scene& scene, const SceneSurfaces& surfac
       continue;
     }
     s.face_group.push_back(int(s.groups.size()));
-    add_group(s, segments, surface.evaluator->patch(), {PointOwner::Kind::Face, int(i)}, false, -1,
-              &network_points);
+    const PointOwner owner{PointOwner::Kind::Face, int(i)};
+    const Patch& patch = surface.evaluator->patch();
+    std::vector<FreePoint> free;
+    if (surface.face < int(topology.face_sides.size()))
+      free = face_free_points(scene, patch, topology, planes, surface.face, cross);
+    PointIndex own;
+    const std::size_t free_first = s.positions.size();
+    for (const FreePoint& p : free) {
+      const Vec3 at = p.position();
+      own.emplace(std::array<double, 3>{at.x, at.y, at.z},
+                  add(s, at, ControlPointKind::FreeInterior,
+                      PointRef::free_point(surface.face, p.name), owner));
+    }
+    ScenePoints::Group& g = add_group(s, segments, patch, owner, false, -1, &network_points, &own);
+    g.face = surface.face;
+    g.free_first = free_first;
+    g.free_count = free.size();
   }
   // Free curves: every control point is the user's; consecutive points make the polygon (a
   // Hermite curve has two points and no polygon between them).
@@ -164,6 +266,25 @@ bool update_group(ScenePoints& s, std::size_t gi, const Patch& patch) {
     const DerivativeArrow& a = g.arrow_data[j];
     if (std::max(a.base, a.vector) >= patch.size()) return false;
     s.arrows[g.first_arrow + j] = {patch.control_point(a.base), arrow_tip(patch, a), a.kind};
+  }
+  return true;
+}
+
+bool update_free_points(ScenePoints& s, std::size_t gi, const Scene& scene, const Patch& patch,
+                        const IncrementalFilling& filling, std::vector<EdgeCrossTangents>& cross) {
+  if (gi >= s.groups.size()) return false;
+  const ScenePoints::Group& g = s.groups[gi];
+  if (g.face < 0 || g.free_first + g.free_count > s.positions.size()) return false;
+  // A face listed without free points gains some only with a new patch (a scheme or degree
+  // change), which update_group does not accept.
+  if (g.free_count == 0) return true;
+  if (g.face >= int(filling.topology().face_sides.size())) return false;
+  const std::vector<FreePoint> free =
+      face_free_points(scene, patch, filling.topology(), filling.planes(), g.face, cross);
+  if (free.size() != g.free_count) return false;
+  for (std::size_t j = 0; j < free.size(); ++j) {
+    if (s.refs[g.free_first + j] != PointRef::free_point(g.face, free[j].name)) return false;
+    s.positions[g.free_first + j] = free[j].position();
   }
   return true;
 }

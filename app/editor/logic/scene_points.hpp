@@ -1,14 +1,15 @@
 // Every control point the editor shows, with the PointRef of those a user may move (network
-// vertices, edge handles, explicit patch points) and none for derived points (Gregory twins, GB
-// ribbon and central points of network faces), the control-net segments of every patch family
-// (core/patch/control_net_topology.hpp: GB rows and spokes, Gregory twins, spline grids, the
-// Catmull–Clark cage, ...) and the derivative data of explicit patches (Hermite tangents and
-// twists, Coons network derivatives) as arrows, never as points. GUI-free: picking and drawing
-// both read this one list.
+// vertices, edge handles, explicit patch points, the free interior points of network GB faces)
+// and none for derived points (Gregory twins, the G1 rows of GB faces), the control-net segments of
+// every patch family (core/patch/control_net_topology.hpp: GB rows and spokes, Gregory twins,
+// spline grids, the Catmull–Clark cage, ...) and the derivative data of explicit patches (Hermite
+// tangents and twists, Coons network derivatives) as arrows, never as points. GUI-free: picking and
+// drawing both read this one list.
 //
 // Layout: the network's vertices, then two handles per edge, then one group per explicit scene
-// patch and one per network face (its derived points; its boundary points are the network's
-// own where they coincide exactly), then the free curves' points, curve after curve. Groups let
+// patch and one per network face (its free points, kind FreeInterior, then its derived points;
+// its boundary points are the network's own and its free points' positions its free points',
+// where they coincide exactly), then the free curves' points, curve after curve. Groups let
 // an edit refresh the points of the surfaces it changed only (update_group).
 #pragma once
 
@@ -17,6 +18,7 @@
 
 #include "app/document/point_ref.hpp"
 #include "core/eval/scene_surfaces.hpp"
+#include "core/network/incremental_filling.hpp"
 #include "render/draw_scene.hpp"
 
 namespace pl {
@@ -47,6 +49,9 @@ struct ScenePoints {
     std::vector<uint32_t> ks;
     std::size_t first_arrow = 0;
     std::vector<DerivativeArrow> arrow_data;
+    // A GB face's free points: positions [free_first, free_first + free_count), face `face`.
+    int face = -1;
+    std::size_t free_first = 0, free_count = 0;
   };
   std::vector<Group> groups;
   std::vector<int> face_group;   // per surface: its group, or -1 (explicit pieces)
@@ -61,11 +66,19 @@ struct ScenePoints {
   int find(const PointRef& ref) const;  // index of ref, or -1
 };
 
-ScenePoints collect_scene_points(const Scene& scene, const SceneSurfaces& surfaces);
+// `filling` (the evaluation's, in step with `scene`) gives the topology and tangent planes the
+// free points' defaults are built from; without it they are built here.
+ScenePoints collect_scene_points(const Scene& scene, const SceneSurfaces& surfaces,
+                                 const IncrementalFilling* filling = nullptr);
 
 // Refreshes group g's positions and arrows from `patch` (the same patch type and size as when
 // collected). Returns false when the patch no longer matches the group.
 bool update_group(ScenePoints& points, std::size_t g, const Patch& patch);
+// Refreshes group g's free points (defaults from the filling, offsets from the scene) at the cost
+// of that face (`cross`: scratch kept by the caller). Returns false when the face's free points
+// are no longer those listed.
+bool update_free_points(ScenePoints& points, std::size_t g, const Scene& scene, const Patch& patch,
+                        const IncrementalFilling& filling, std::vector<EdgeCrossTangents>& cross);
 
 // The net the renderer draws from the points: every point with its kind and role (derived where
 // there is no ref), the segments and the arrows; with `only_shown`, the shown points only (and
