@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 #include <numeric>
 
+#include "core/patch/gb/gb_interior_patch.hpp"
+
 namespace pl {
 
 namespace {
@@ -41,7 +43,9 @@ PatchReport analyze_surface(const Scene& scene, const SceneSurface& s) {
   r.name = s.name;
   r.type = ev.patch().type();
   r.sides = ev.patch().domain().side_count();
-  if (s.face >= 0 && scene.network && r.type.rfind("gb-ribbons", 0) == 0) {
+  // A network GB face: an independent-ribbon patch, or its interior form (gb_interior_patch.hpp).
+  if (s.face >= 0 && scene.network &&
+      (r.type.rfind("gb-ribbons", 0) == 0 || r.type == GBInteriorPatch::kType)) {
     const NetworkFace& face = scene.network->faces.at(s.face);
     r.degree = face.degree;
     r.offsets = face.offsets.size();
