@@ -187,12 +187,22 @@ void patch_section(const PatchProperties& q) {
   field("points", std::to_string(q.points));
 }
 
+// Where point r is: a free point as the views list it when they show the document as it is (the
+// document would rebuild its face's G1 data every frame), any other from the document.
+Vec3 position_of(const SidePanel& p, const PointRef& r) {
+  if (r.kind == PointRef::Kind::FreePoint && p.views.ready()) {
+    const LiveSurfaces& live = p.views.main()->shown();
+    if (live.synced_revision() == p.doc.revision())
+      if (const int i = live.points().find(r); i >= 0) return live.points().positions[i];
+  }
+  return point_position(p.doc.scene(), r);
+}
+
 // Typed coordinates of the selected points' centre: applied as one command when the field is
 // left or Enter pressed.
 void coordinates(const SidePanel& p, const std::vector<PointRef>& points) {
-  const Scene& scene = p.doc.scene();
   Vec3 centre(0);
-  for (const PointRef& r : points) centre += point_position(scene, r);
+  for (const PointRef& r : points) centre += position_of(p, r);
   centre /= double(points.size());
   static double edit[3];
   static bool editing = false;
@@ -204,7 +214,7 @@ void coordinates(const SidePanel& p, const std::vector<PointRef>& points) {
     const Vec3 d = Vec3(edit[0], edit[1], edit[2]) - centre;
     if (std::isfinite(d.x) && std::isfinite(d.y) && std::isfinite(d.z) && d != Vec3(0)) {
       std::vector<Vec3> positions;
-      for (const PointRef& r : points) positions.push_back(point_position(scene, r) + d);
+      for (const PointRef& r : points) positions.push_back(position_of(p, r) + d);
       run(p, std::make_shared<MovePointsCommand>(points, positions));
     }
   }

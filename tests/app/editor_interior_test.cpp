@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include "app/document/interior_commands.hpp"
+#include "app/document/network_commands.hpp"
+#include "app/editor/logic/difference_field.hpp"
 #include "app/editor/logic/interior_actions.hpp"
 #include "app/editor/logic/live_surfaces.hpp"
 #include "command_test_util.hpp"
@@ -82,6 +84,15 @@ TEST(EditorInterior, AFreePointDragReevaluatesItsFaceOnly) {
   }
   doc.end_drag();
   expect_points_as_fresh(live, doc.scene());
+  // The engine follows the face point by point: one control point moved, nothing rebuilt.
+  SceneEvaluation engine(doc.scene(), 6, std::nullopt);
+  doc.begin_drag({p});
+  doc.drag_to({point_position(doc.scene(), p) + Vec3(0.01, 0, 0)});
+  const SyncStats stats = engine.sync(doc.scene());
+  EXPECT_EQ(stats.changed_surfaces, std::vector<int>{0});
+  EXPECT_EQ(stats.rebuilt_surfaces, 0u);
+  EXPECT_EQ(stats.moved_points, 1u);
+  doc.cancel_drag();
   // The network moves: the free points follow their new defaults, offsets kept.
   const int v = doc.scene().network->faces[0].loop[1];
   doc.begin_drag({PointRef::vertex(v)});
@@ -143,6 +154,37 @@ TEST(EditorInterior, ActionsActOnTheSelectedFaceOrFreePoint) {
   int offered = 0;
   for (const Action* a : r.for_context(ContextTarget::Face)) offered += a->menu == "Face";
   EXPECT_EQ(offered, 3);
+}
+
+TEST(EditorInterior, TheComparisonsDistanceFollowsAnInteriorEdit) {
+  // The quad of the default scene filled GB at degree 4: Gregory on the left, GB on the right.
+  Document doc(asset("default.json"));
+  doc.execute(std::make_unique<SetFaceSchemeCommand>(0, FaceScheme::GB));
+  doc.execute(std::make_unique<SetFaceDegreeCommand>(0, 4));
+  LiveSurfaces gregory(doc.scene(), 12, FaceScheme::Gregory, "g", doc.revision());
+  LiveSurfaces gb(doc.scene(), 12, FaceScheme::GB, "b", doc.revision());
+  DifferenceField field;
+  EXPECT_TRUE(field.follow(gregory.draw(), gb.draw(), doc.revision()));
+  const double before = field.max_abs();
+  EXPECT_LT(before, 0.1);  // two fillings of one boundary
+  // Its centre raised by 0.2: the GB surface moves by 0.2 phi_0, phi_0 = 1 at the domain's
+  // centre; a distance moves by at most the displacement (it is 1-Lipschitz).
+  const PointRef c = PointRef::free_point(0, {.centre = true});
+  doc.begin_drag({c});
+  doc.drag_to({point_position(doc.scene(), c) + Vec3(0, 0, 0.2)});
+  EXPECT_TRUE(gregory.sync(doc.scene(), doc.revision()).empty());  // Gregory has no interior
+  EXPECT_EQ(gb.sync(doc.scene(), doc.revision()), std::vector<int>{0});
+  EXPECT_TRUE(field.follow(gregory.draw(), gb.draw(), doc.revision()));
+  const double raised = field.max_abs();
+  EXPECT_GT(raised, before + 0.1);
+  EXPECT_LE(raised, before + 0.2 + 1e-9);
+  EXPECT_EQ(field.range(), raised);  // the legend's symmetric range
+  doc.end_drag();
+  doc.undo();
+  gregory.sync(doc.scene(), doc.revision());
+  gb.sync(doc.scene(), doc.revision());
+  EXPECT_TRUE(field.follow(gregory.draw(), gb.draw(), doc.revision()));
+  EXPECT_NEAR(field.max_abs(), before, 1e-12);
 }
 
 }  // namespace
