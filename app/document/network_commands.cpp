@@ -171,6 +171,14 @@ void SplitEdgeCommand::apply(Scene& scene) {
     throw EditRefused("cannot split edge " + str(edge_) + ": " + std::string(e.what()));
   }
   split_ = split_edge(net, edge_, t_, normal);
+  // A face with a side more is another n-gon: its free points are other points, so moved ones
+  // are put back (the degree stays).
+  std::vector<int> reset;
+  for (int f : split_.faces)
+    if (!net.faces[f].offsets.empty()) {
+      net.faces[f].offsets.clear();
+      reset.push_back(f);
+    }
   const int a = net.edges[edge_].v[0], b = net.edges[split_.edge].v[1];
   check_network(net, {split_.vertex, a, b});
   label_ = "split edge " + str(edge_) + ": new vertex " + str(split_.vertex) + ", new edge " +
@@ -180,6 +188,8 @@ void SplitEdgeCommand::apply(Scene& scene) {
     const FaceScheme s = resolve_scheme(face, std::nullopt);
     label_ += "; face " + str(f) + " now has " + str(int(face.loop.size())) + " sides (" +
               (s == FaceScheme::GB ? "GB" : "Gregory") + ")";
+    if (std::find(reset.begin(), reset.end(), f) != reset.end())
+      label_ += ", its interior back at its defaults";
   }
 }
 

@@ -212,5 +212,24 @@ TEST(InteriorCommands, AFaceTurnedGregoryDropsItsInterior) {
   EXPECT_TRUE(doc.scene().network->faces[2].offsets.empty());
 }
 
+TEST(InteriorCommands, ASplitSideResetsTheFacesInterior) {
+  Document doc(asset("gb-interior.json"));
+  const Network& net = *doc.scene().network;
+  // An edge of the pentagon (face 0, degree 5 with two moved points): it becomes a hexagon.
+  const auto& loop = net.faces[0].loop;
+  int edge = -1;
+  for (std::size_t e = 0; e < net.edges.size(); ++e)
+    if ((net.edges[e].v[0] == loop[3] && net.edges[e].v[1] == loop[4]) ||
+        (net.edges[e].v[0] == loop[4] && net.edges[e].v[1] == loop[3]))
+      edge = int(e);
+  ASSERT_GE(edge, 0);
+  const std::string label = expect_good_command(doc, std::make_unique<SplitEdgeCommand>(edge, 0.5));
+  EXPECT_NE(label.find("face 0 now has 6 sides (GB), its interior back at its defaults"),
+            std::string::npos)
+      << label;
+  EXPECT_EQ(doc.scene().network->faces[0].degree, 5);
+  EXPECT_TRUE(doc.scene().network->faces[0].offsets.empty());
+}
+
 }  // namespace
 }  // namespace pl::test
