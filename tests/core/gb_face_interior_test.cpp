@@ -342,21 +342,34 @@ TEST(GBFaceInterior, BadInteriorKeysAreLocatedErrors) {
          "x");
 }
 
-// The engine follows interior edits: an offset changes one face's fill data, so exactly that face
-// is refilled, and its patch is the from-scratch filling's.
-TEST(GBFaceInterior, IncrementalFillingRefillsOnlyTheEditedFace) {
+// The engine follows interior edits: an offset change of a face whose patch is the interior form
+// refills nothing (interior_edited lists the face); moving the patch it had by the listed moves
+// gives the from-scratch filling's patch, point for point. A degree change is a refill.
+TEST(GBFaceInterior, IncrementalFillingListsInteriorEditsWithoutRefilling) {
   Network n = load_network("gb-hole-filling.json");
   n.faces[0].degree = 6;
   IncrementalFilling filling(std::nullopt, "t.json");
-  filling.update(n);
+  const FillingUpdate first = filling.update(n);
+  std::unique_ptr<Patch> patch = first.refilled.at(0).patch->clone();
   n.faces[0].offsets.push_back({.side = 2, .j = 3, .layer = 2, .by = {0, 0, 0.2}});
+  n.faces[0].offsets.push_back({.centre = true, .by = {0.1, 0, 0}});
   const FillingUpdate up = filling.update(n);
-  ASSERT_EQ(up.refilled.size(), 1u);
-  EXPECT_EQ(up.refilled[0].face, 0);
+  EXPECT_TRUE(up.refilled.empty());
+  EXPECT_EQ(up.interior_edited, std::vector<int>{0});
+  EXPECT_EQ(up.previous_face[0], 0);
+  const auto moves = interior_point_moves(dynamic_cast<const GBInteriorPatch&>(*patch), n.faces[0]);
+  EXPECT_EQ(moves.size(), 2u);
+  for (const InteriorPointMove& m : moves) patch->set_control_point(m.index, m.position);
   const NetworkFilling scratch = fill_network(n, validate_network(n, "t"), std::nullopt, "t");
-  const Patch &a = *up.refilled[0].patch, &b = *scratch.faces[0].patch;
-  ASSERT_EQ(a.control_points(), b.control_points());
-  for (const Vec2& x : domain_samples(a)) EXPECT_EQ(a.evaluate(x).p, b.evaluate(x).p);
+  const Patch& b = *scratch.faces[0].patch;
+  ASSERT_EQ(patch->control_points(), b.control_points());
+  ASSERT_EQ(filling.build(0).patch->control_points(), b.control_points());
+  for (const Vec2& x : domain_samples(b)) EXPECT_EQ(patch->evaluate(x).p, b.evaluate(x).p);
+  n.faces[0].degree = 7;
+  const FillingUpdate raised = filling.update(n);
+  ASSERT_EQ(raised.refilled.size(), 1u);
+  EXPECT_EQ(raised.refilled[0].face, 0);
+  EXPECT_TRUE(raised.interior_edited.empty());
 }
 
 }  // namespace
