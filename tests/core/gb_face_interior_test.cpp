@@ -14,6 +14,7 @@
 #include "core/network/face_ribbons.hpp"
 #include "core/network/gb_face.hpp"
 #include "core/network/incremental_filling.hpp"
+#include "core/patch/control_net_topology.hpp"
 #include "core/patch/gb/default_net.hpp"
 #include "core/patch/gb/gb_interior_patch.hpp"
 #include "network_test_util.hpp"
@@ -370,6 +371,34 @@ TEST(GBFaceInterior, IncrementalFillingListsInteriorEditsWithoutRefilling) {
   ASSERT_EQ(raised.refilled.size(), 1u);
   EXPECT_EQ(raised.refilled[0].face, 0);
   EXPECT_TRUE(raised.interior_edited.empty());
+}
+
+// The face's patch shows its degree-d net: the net of a .gbp patch with the same points, and
+// nothing of what lies behind it (the default filling's points, the free points' defaults).
+TEST(GBFaceInterior, ThePatchShowsItsDegreeNet) {
+  Network n = load_network("gb-hole-filling.json");
+  const NetworkTopology topo = validate_network(n, "test");
+  std::vector<ProjectedVertex> projected;
+  const auto ribbons = build_face_ribbons(n, topo, projected);
+  const InteriorOffset o{.side = 1, .j = 3, .layer = 2, .by = {0, 0, 0.1}};
+  const auto patch = gb_face_interior_patch(ribbons[0], 6, std::span(&o, 1));
+  const std::vector<Vec3> net(patch->control_points().begin(),
+                              patch->control_points().begin() + patch->net_size());
+  const GBPatch gbp(5, 6, net);
+  const ControlNetTopology t = control_net_topology(*patch);
+  EXPECT_EQ(t.segments, control_net_topology(gbp).segments);
+  for (std::size_t k = 0; k < patch->size(); ++k) {
+    EXPECT_EQ(t.is_vector[k], k >= patch->net_size()) << k;
+    if (k < patch->net_size()) {
+      EXPECT_EQ(patch->kind(k), gbp.kind(k)) << k;
+    }
+  }
+  // Rings 0 and 1 are the default net's; the moved point sits at its default plus its offset.
+  const std::vector<Vec3> defaults = gb_face_default_net(ribbons[0], 6);
+  for (std::size_t k = 0; k < patch->net_size(); ++k) {
+    const Vec3 want = k == interior_point_index(5, 6, o) ? defaults[k] + o.by : defaults[k];
+    EXPECT_EQ(patch->control_point(k), want) << k;
+  }
 }
 
 }  // namespace

@@ -42,7 +42,7 @@ namespace pl {
 class GBInteriorPatch final : public PatchType<GBInteriorPatch> {
  public:
   // A network-face form, not a scene type of its own: scenes store the face, not this patch.
-  static constexpr const char* kType = "gb-interior";
+  static constexpr const char* kType = "gb-ribbons-interior";
 
   // `defaults` and `net`: the degree-d .gbp net, GBPatch::point_count(n, d) points each (n the
   // filling's side count), `net` = defaults + offsets at the free points; rings 0 and 1 of `net`
