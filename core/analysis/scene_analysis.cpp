@@ -8,8 +8,6 @@
 #include <nlohmann/json.hpp>
 #include <numeric>
 
-#include "core/patch/gb/gb_interior_patch.hpp"
-
 namespace pl {
 
 namespace {
@@ -43,9 +41,7 @@ PatchReport analyze_surface(const Scene& scene, const SceneSurface& s) {
   r.name = s.name;
   r.type = ev.patch().type();
   r.sides = ev.patch().domain().side_count();
-  // A network GB face: an independent-ribbon patch, or its interior form (gb_interior_patch.hpp).
-  if (s.face >= 0 && scene.network &&
-      (r.type.rfind("gb-ribbons", 0) == 0 || r.type == GBInteriorPatch::kType)) {
+  if (s.face >= 0 && scene.network && r.type.rfind("gb-ribbons", 0) == 0) {
     const NetworkFace& face = scene.network->faces.at(s.face);
     r.degree = face.degree;
     r.offsets = face.offsets.size();

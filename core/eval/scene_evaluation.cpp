@@ -1,5 +1,6 @@
 #include "core/eval/scene_evaluation.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace pl {
@@ -26,6 +27,19 @@ bool follow(PatchEvaluator& ev, const Patch& target, std::size_t& moved) {
   for (std::size_t k = 0; k < target.size(); ++k)
     if (current.control_point(k) != target.control_point(k))
       moves.push_back({k, target.control_point(k)});
+  ev.move_control_points(moves);
+  moved += moves.size();
+  return true;
+}
+
+// Moves a face's interior patch onto the offsets of `face` (an interior edit): one axpy per
+// moved free point. False if the evaluator does not hold an interior patch.
+bool follow_interior(PatchEvaluator& ev, const NetworkFace& face, std::size_t& moved) {
+  const auto* patch = dynamic_cast<const GBInteriorPatch*>(&ev.patch());
+  if (!patch) return false;
+  std::vector<PatchEvaluator::PointMove> moves;
+  for (const InteriorPointMove& m : interior_point_moves(*patch, face))
+    moves.push_back({m.index, m.position});
   ev.move_control_points(moves);
   moved += moves.size();
   return true;
@@ -80,8 +94,18 @@ void SceneEvaluation::sync_faces(const FillingUpdate& up, std::vector<SceneSurfa
       s.face = f;
       s.patch_side = filling_.patch_side(f);
       const std::string name = face_name(net, f);
-      const bool changed = from != f || s.name != name;
+      bool changed = from != f || s.name != name;
       s.name = name;
+      if (std::binary_search(up.interior_edited.begin(), up.interior_edited.end(), f)) {
+        const uint64_t before = s.evaluator->revision();
+        if (!follow_interior(*s.evaluator, net.faces[f], stats.moved_points)) {
+          const FacePatch fp = filling_.build(f);  // not expected: the patch was interior
+          if (!follow(*s.evaluator, *fp.patch, stats.moved_points))
+            s.evaluator = make_evaluator(fp.patch->clone(), s.evaluator->tessellation().density);
+          s.evaluator->continue_revisions_from(before);
+        }
+        changed = changed || s.evaluator->revision() != before;
+      }
       if (changed) stats.changed_surfaces.push_back(f);
       stats.previous_surface.push_back(from);
       out.push_back(std::move(s));

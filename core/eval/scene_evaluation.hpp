@@ -11,6 +11,10 @@
 //     axpy each with a cached influence column, geometry once per sample); a face with a new
 //     layout (a split edge gave it a side) or a new face is evaluated from scratch; a deleted
 //     face's evaluator is dropped; an unchanged face keeps its evaluator and samples;
+//   - an interior edit of a GB face (its offsets alone changed: a free point dragged or typed)
+//     moves the free points whose offsets changed on the face's patch as it is, without a patch
+//     build: an axpy each with the point's cached influence column (delta phi_p and its
+//     derivatives), then the geometry of the samples it touches;
 //   - explicit patches are compared by identity (the document copies a patch on write, and the
 //     evaluation keeps a reference to the one it followed, so an address cannot be reused):
 //     only replaced patches are compared point by point.

@@ -180,7 +180,7 @@ std::unique_ptr<GBInteriorPatch> gb_face_interior_patch(const FaceRibbons& input
 
 std::unique_ptr<Patch> gb_face_patch(const FaceRibbons& input, int degree,
                                      std::span<const InteriorOffset> offsets, GBDomainKind* used) {
-  if (degree == 3 && offsets.empty()) return gb_face_patch(input, used);
+  if (!gb_face_interior_form(degree, offsets)) return gb_face_patch(input, used);
   return gb_face_interior_patch(input, degree, offsets, used);
 }
 

@@ -47,6 +47,11 @@ FaceRibbons ribbons_as_filled(const FaceRibbons& ribbons);
 std::unique_ptr<Patch> gb_face_patch(const FaceRibbons& ribbons, int degree,
                                      std::span<const InteriorOffset> offsets,
                                      GBDomainKind* used = nullptr);
+// Whether gb_face_patch gives the interior form (GBInteriorPatch) for this degree and offsets:
+// every degree but 3, and degree 3 with offsets.
+inline bool gb_face_interior_form(int degree, std::span<const InteriorOffset> offsets) {
+  return degree != 3 || !offsets.empty();
+}
 // Always the interior form (GBInteriorPatch), at any degree.
 std::unique_ptr<GBInteriorPatch> gb_face_interior_patch(const FaceRibbons& ribbons, int degree,
                                                         std::span<const InteriorOffset> offsets,

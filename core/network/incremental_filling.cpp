@@ -7,6 +7,8 @@
 #include <utility>
 
 #include "core/base/data_error.hpp"
+#include "core/network/gb_face.hpp"
+#include "core/network/gb_face_interior.hpp"
 
 namespace pl {
 
@@ -52,6 +54,50 @@ std::size_t ribbons_hash(FaceScheme scheme, const FaceRibbons& r) {
 }
 
 }  // namespace
+
+std::vector<InteriorPointMove> interior_point_moves(const GBInteriorPatch& patch,
+                                                    const NetworkFace& face) {
+  const int n = patch.sides(), d = patch.degree();
+  std::vector<Vec3> by(patch.net_size(), Vec3(0));
+  for (const InteriorOffset& o : face.offsets) by.at(interior_point_index(n, d, o)) += o.by;
+  std::vector<InteriorPointMove> moves;
+  // Positions, not offsets, are compared: (D + by) - D need not be by in floating point, while
+  // D + by is the same number however often it is computed.
+  for (std::size_t k : patch.free_points()) {
+    const Vec3 p = patch.control_point(patch.default_index(k)) + by[k];
+    if (patch.control_point(k) != p) moves.push_back({k, p});
+  }
+  return moves;
+}
+
+void IncrementalFilling::note_patch(Face& face, const FacePatch& fp) {
+  face.patch_side = fp.patch_side;
+  const auto* interior = dynamic_cast<const GBInteriorPatch*>(fp.patch.get());
+  face.interior = interior != nullptr;
+  face.centre = interior && interior->has_centre();
+}
+
+bool IncrementalFilling::interior_edit(int f, const Face& face, const NetworkFace& now) const {
+  const Face& was = faces_[f];
+  if (!was.interior || face.scheme != FaceScheme::GB || face.scheme != was.scheme ||
+      !(face.ribbons == was.ribbons) || !gb_face_interior_form(now.degree, now.offsets))
+    return false;
+  NetworkFace a = now, b = network_.faces[f];
+  a.offsets.clear();
+  b.offsets.clear();
+  if (!same_fill_data(a, b)) return false;
+  // Offsets the patch could not carry go through the build, which names the problem.
+  const int n = static_cast<int>(now.loop.size());
+  for (const InteriorOffset& o : now.offsets)
+    if (!interior_offset_problem(n, now.degree, o).empty() || (o.centre && !was.centre))
+      return false;
+  return true;
+}
+
+FacePatch IncrementalFilling::build(int face) const {
+  return build_face_patch(face, faces_.at(face).scheme, faces_[face].ribbons, network_.faces[face],
+                          source_);
+}
 
 IncrementalFilling::IncrementalFilling(std::optional<FaceScheme> scheme_override,
                                        std::string source)
@@ -119,8 +165,12 @@ FillingUpdate IncrementalFilling::update_in_place(const Network& n) {
       if (face.scheme == faces_[f].scheme && face.ribbons == faces_[f].ribbons &&
           same_fill_data(n.faces[f], network_.faces[f]))
         continue;  // e.g. a handle moved back where it was: nothing to refill
+      if (interior_edit(f, face, n.faces[f])) {
+        up.interior_edited.push_back(f);
+        continue;
+      }
       FacePatch fp = build_face_patch(f, face.scheme, face.ribbons, n.faces[f], source_);
-      face.patch_side = fp.patch_side;
+      note_patch(face, fp);
       new_faces.emplace_back(f, std::move(face));
       up.refilled.push_back(std::move(fp));
     }
@@ -192,13 +242,15 @@ FillingUpdate IncrementalFilling::rebuild(const Network& n) {
         taken[o] = true;
         up.previous_face[f] = o;
         face.patch_side = faces_[o].patch_side;
+        face.interior = faces_[o].interior;
+        face.centre = faces_[o].centre;
         if (network_.faces[o].name != n.faces[f].name) up.renamed.push_back(fi);
         break;
       }
     }
     if (up.previous_face[f] >= 0) continue;
     FacePatch fp = build_face_patch(fi, face.scheme, face.ribbons, n.faces[f], source_);
-    face.patch_side = fp.patch_side;
+    note_patch(face, fp);
     up.refilled.push_back(std::move(fp));
   }
   std::vector<ProjectedVertex> projected = pl::projected_vertices(planes);

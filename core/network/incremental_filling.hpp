@@ -11,8 +11,14 @@
 //     (cheap, ~3 ms at 1,536 faces); a face whose ribbons and fill data equal those of a face
 //     filled before keeps that face's patch, so only new or changed faces are built (a GB
 //     patch costs ~0.1 ms to build) and evaluated.
-// A face's patch is a function of its resolved scheme and its ribbons (face_ribbons), which is
-// what makes that comparison exact.
+//   - an interior edit (a GB face's offsets changed, nothing else: its ribbons, scheme and degree
+//     are the same, and its patch is the interior form before and after, gb_face.hpp): the face
+//     is not refilled. Its patch differs from the one the caller holds only in the free points
+//     whose offsets changed (GBInteriorPatch: the defaults depend on the ribbons alone), so it is
+//     listed in interior_edited and the caller moves those points (SceneEvaluation: an axpy with
+//     each point's influence column). A drag of a free point costs no patch build.
+// A face's patch is a function of its resolved scheme, its ribbons (face_ribbons) and its degree
+// and offsets, which is what makes that comparison exact.
 #pragma once
 
 #include <memory>
@@ -24,6 +30,7 @@
 #include "core/network/face_ribbons.hpp"
 #include "core/network/network_filling.hpp"
 #include "core/network/tangent_planes.hpp"
+#include "core/patch/gb/gb_interior_patch.hpp"
 
 namespace pl {
 
@@ -37,8 +44,21 @@ struct FillingUpdate {
   std::vector<FacePatch> refilled;
   // Faces whose name changed (nothing to evaluate).
   std::vector<int> renamed;
+  // Faces whose offsets alone changed (see the header), ascending; they keep their patch
+  // (previous_face[f] == f) and the caller moves its free points to the new offsets
+  // (interior_point_moves).
+  std::vector<int> interior_edited;
   bool projected_changed = false;  // projected_vertices() changed
 };
+
+// The moves that bring `patch` (a face's patch as last built or followed) to the offsets of
+// `face`: (net index, new position) for every free point whose offset differs.
+struct InteriorPointMove {
+  std::size_t index;
+  Vec3 position;
+};
+std::vector<InteriorPointMove> interior_point_moves(const GBInteriorPatch& patch,
+                                                    const NetworkFace& face);
 
 class IncrementalFilling {
  public:
@@ -54,13 +74,22 @@ class IncrementalFilling {
   const std::vector<TangentPlane>& planes() const { return planes_; }
   const std::vector<ProjectedVertex>& projected_vertices() const { return projected_; }
   const std::vector<int>& patch_side(int face) const { return faces_.at(face).patch_side; }
+  // The face's patch built from scratch from the data last filled (what an interior edit
+  // leaves the caller to follow point by point).
+  FacePatch build(int face) const;
 
  private:
   struct Face {
     FaceScheme scheme = FaceScheme::Auto;  // resolved
     FaceRibbons ribbons;
     std::vector<int> patch_side;
+    bool interior = false;  // its patch is a GBInteriorPatch
+    bool centre = false;    // ... whose domain carries the central point
   };
+  // The face data `f` as built into `face` (its patch side map and patch form).
+  static void note_patch(Face& face, const FacePatch& fp);
+  // Whether face f's change from the filled copy to `now` is an interior edit (header).
+  bool interior_edit(int f, const Face& face, const NetworkFace& now) const;
   FillingUpdate update_in_place(const Network& network);
   FillingUpdate rebuild(const Network& network);
   bool same_structure(const Network& network) const;

@@ -9,6 +9,8 @@
 #include "core/patch/catmull_clark_patch.hpp"
 #include "core/patch/coons_network_patch.hpp"
 #include "core/patch/gap_fill_patch.hpp"
+#include "core/patch/gb/default_net.hpp"
+#include "core/patch/gb/gb_interior_patch.hpp"
 #include "core/patch/gb/gb_patch.hpp"
 #include "core/patch/gb/gb_ribbon_patch.hpp"
 #include "core/patch/gregory_quad.hpp"
@@ -164,11 +166,14 @@ ControlNetTopology gregory_net(const GregoryTriPatch& p) {
   return gregory_like(p, 3, 5, true);
 }
 
-ControlNetTopology gb_net(const GBPatch& p) {
-  const int n = p.sides(), d = p.degree(), l = p.layers();
+namespace {
+
+// The net lines of a .gbp net of n sides and degree d (index: gb_net_index).
+std::vector<Segment> gbp_net_segments(int n, int d) {
+  const int l = (d + 1) / 2;
   std::vector<Segment> s;
   for (int i = 0; i < n; ++i) {
-    auto at = [&](int j, int k) { return u32(p.index(i, j, k)); };
+    auto at = [&](int j, int k) { return u32(gb_net_index(n, d, i, j, k)); };
     for (int k = 0; k < l; ++k)
       for (int j = 0; j <= d; ++j) {
         if (j < d) s.push_back({at(j, k), at(j + 1, k)});      // rows
@@ -179,7 +184,19 @@ ControlNetTopology gb_net(const GBPatch& p) {
     s.push_back({at(d / 2, l - 1), 0});
     s.push_back({at((d + 1) / 2, l - 1), 0});
   }
-  return positions_only(p.size(), std::move(s));
+  return s;
+}
+
+}  // namespace
+
+ControlNetTopology gb_net(const GBPatch& p) {
+  return positions_only(p.size(), gbp_net_segments(p.sides(), p.degree()));
+}
+
+ControlNetTopology gb_interior_net(const GBInteriorPatch& p) {
+  ControlNetTopology t = positions_only(p.size(), gbp_net_segments(p.sides(), p.degree()));
+  for (std::size_t k = p.net_size(); k < p.size(); ++k) t.is_vector[k] = true;  // not drawn
+  return t;
 }
 
 ControlNetTopology gb_ribbon_net(const GBRibbonPatch& p) {
@@ -216,6 +233,7 @@ ControlNetTopology control_net_topology(const Patch& patch) {
   if (const auto* p = dynamic_cast<const GregoryTriPatch*>(&patch)) return gregory_net(*p);
   if (const auto* p = dynamic_cast<const GBPatch*>(&patch)) return gb_net(*p);
   if (const auto* p = dynamic_cast<const GBRibbonPatch*>(&patch)) return gb_ribbon_net(*p);
+  if (const auto* p = dynamic_cast<const GBInteriorPatch*>(&patch)) return gb_interior_net(*p);
   if (const auto* p = dynamic_cast<const CatmullClarkPatch*>(&patch)) return catmull_clark_net(*p);
   return positions_only(patch.size(), {});
 }

@@ -23,6 +23,7 @@ class GregoryQuadPatch;
 class GregoryTriPatch;
 class GBPatch;
 class GBRibbonPatch;
+class GBInteriorPatch;
 class CatmullClarkPatch;
 class PairJoinPatch;
 class GapFillPatch;
@@ -44,8 +45,9 @@ struct ControlNetTopology {
   // Net lines between positions (never vectors), each pair once, smaller index first.
   std::vector<std::array<uint32_t, 2>> segments;
   std::vector<DerivativeArrow> arrows;
-  // Per control point: true for a derivative vector, which is not a position and is drawn only as
-  // its arrow. Same size as the patch.
+  // Per control point: true for an entry that is not a position of the net: a derivative vector,
+  // drawn only as its arrow, or a hidden entry that is not drawn at all (a network GB face's
+  // default filling and free-point defaults behind its degree-d net). Same size as the patch.
   std::vector<bool> is_vector;
 };
 
@@ -78,6 +80,9 @@ ControlNetTopology gregory_net(const GregoryTriPatch& p);
 // Per ribbon: rows (parallel to the side) and spokes (towards the centre) of its (d+1) x l grid,
 // shared corner blocks once; the central point is joined to the middle of the innermost row.
 ControlNetTopology gb_net(const GBPatch& p);
+// A network GB face with interior control: its degree-d net drawn as gb_net draws a .gbp net; the
+// entries after the net (the default filling's points, the free points' defaults) hidden.
+ControlNetTopology gb_interior_net(const GBInteriorPatch& p);
 // Per ribbon: the rows and spokes of its grid.
 ControlNetTopology gb_ribbon_net(const GBRibbonPatch& p);
 // The base mesh's edges (the cage).

@@ -51,6 +51,7 @@ void figures_quiet_busy(const char* name, const char* unit, double quiet, double
 void bench_bezier(const Options& options);
 void bench_gb(const Options& options);
 void bench_gb_face(const Options& options);
+void bench_interior(const Options& options);
 void bench_engine(const Options& options);
 void bench_catmull_clark(const Options& options);
 void bench_cad(const Options& options);

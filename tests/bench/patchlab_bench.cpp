@@ -1,7 +1,7 @@
 // The benchmark program: prints "figure NAME VALUE UNIT" lines. Run without arguments for real
 // figures (Release build), with --quick for a seconds-long smoke run, with --grains for the sweep
 // that chose the parallel grains, with --only NAME,... for some of the benchmarks (bezier, gb,
-// gb_face, engine, catmull_clark, cad, curve).
+// gb_face, interior, engine, catmull_clark, cad, curve).
 #include <oneapi/tbb/info.h>
 
 #include <cstring>
@@ -20,9 +20,10 @@ int main(int argc, char** argv) {
     } else if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc) {
       only.append(",").append(argv[++i]).append(",");
     } else {
-      std::fprintf(stderr,
-                   "usage: patchlab_bench [--quick] [--grains] [--only bezier,gb,gb_face,engine,"
-                   "catmull_clark,cad,curve]\n");
+      std::fprintf(
+          stderr,
+          "usage: patchlab_bench [--quick] [--grains] [--only bezier,gb,gb_face,interior,engine,"
+          "catmull_clark,cad,curve]\n");
       return 2;
     }
   }
@@ -39,6 +40,7 @@ int main(int argc, char** argv) {
   run("bezier", pl::bench::bench_bezier);
   run("gb", pl::bench::bench_gb);
   run("gb_face", pl::bench::bench_gb_face);
+  run("interior", pl::bench::bench_interior);
   run("engine", pl::bench::bench_engine);
   run("catmull_clark", pl::bench::bench_catmull_clark);
   run("cad", pl::bench::bench_cad);

@@ -14,6 +14,7 @@
 #include "core/network/face_ribbons.hpp"
 #include "core/network/gb_face.hpp"
 #include "core/network/incremental_filling.hpp"
+#include "core/patch/control_net_topology.hpp"
 #include "core/patch/gb/default_net.hpp"
 #include "core/patch/gb/gb_interior_patch.hpp"
 #include "network_test_util.hpp"
@@ -342,21 +343,62 @@ TEST(GBFaceInterior, BadInteriorKeysAreLocatedErrors) {
          "x");
 }
 
-// The engine follows interior edits: an offset changes one face's fill data, so exactly that face
-// is refilled, and its patch is the from-scratch filling's.
-TEST(GBFaceInterior, IncrementalFillingRefillsOnlyTheEditedFace) {
+// The engine follows interior edits: an offset change of a face whose patch is the interior form
+// refills nothing (interior_edited lists the face); moving the patch it had by the listed moves
+// gives the from-scratch filling's patch, point for point. A degree change is a refill.
+TEST(GBFaceInterior, IncrementalFillingListsInteriorEditsWithoutRefilling) {
   Network n = load_network("gb-hole-filling.json");
   n.faces[0].degree = 6;
   IncrementalFilling filling(std::nullopt, "t.json");
-  filling.update(n);
+  const FillingUpdate first = filling.update(n);
+  std::unique_ptr<Patch> patch = first.refilled.at(0).patch->clone();
   n.faces[0].offsets.push_back({.side = 2, .j = 3, .layer = 2, .by = {0, 0, 0.2}});
+  n.faces[0].offsets.push_back({.centre = true, .by = {0.1, 0, 0}});
   const FillingUpdate up = filling.update(n);
-  ASSERT_EQ(up.refilled.size(), 1u);
-  EXPECT_EQ(up.refilled[0].face, 0);
+  EXPECT_TRUE(up.refilled.empty());
+  EXPECT_EQ(up.interior_edited, std::vector<int>{0});
+  EXPECT_EQ(up.previous_face[0], 0);
+  const auto moves = interior_point_moves(dynamic_cast<const GBInteriorPatch&>(*patch), n.faces[0]);
+  EXPECT_EQ(moves.size(), 2u);
+  for (const InteriorPointMove& m : moves) patch->set_control_point(m.index, m.position);
   const NetworkFilling scratch = fill_network(n, validate_network(n, "t"), std::nullopt, "t");
-  const Patch &a = *up.refilled[0].patch, &b = *scratch.faces[0].patch;
-  ASSERT_EQ(a.control_points(), b.control_points());
-  for (const Vec2& x : domain_samples(a)) EXPECT_EQ(a.evaluate(x).p, b.evaluate(x).p);
+  const Patch& b = *scratch.faces[0].patch;
+  ASSERT_EQ(patch->control_points(), b.control_points());
+  ASSERT_EQ(filling.build(0).patch->control_points(), b.control_points());
+  for (const Vec2& x : domain_samples(b)) EXPECT_EQ(patch->evaluate(x).p, b.evaluate(x).p);
+  n.faces[0].degree = 7;
+  const FillingUpdate raised = filling.update(n);
+  ASSERT_EQ(raised.refilled.size(), 1u);
+  EXPECT_EQ(raised.refilled[0].face, 0);
+  EXPECT_TRUE(raised.interior_edited.empty());
+}
+
+// The face's patch shows its degree-d net: the net of a .gbp patch with the same points, and
+// nothing of what lies behind it (the default filling's points, the free points' defaults).
+TEST(GBFaceInterior, ThePatchShowsItsDegreeNet) {
+  Network n = load_network("gb-hole-filling.json");
+  const NetworkTopology topo = validate_network(n, "test");
+  std::vector<ProjectedVertex> projected;
+  const auto ribbons = build_face_ribbons(n, topo, projected);
+  const InteriorOffset o{.side = 1, .j = 3, .layer = 2, .by = {0, 0, 0.1}};
+  const auto patch = gb_face_interior_patch(ribbons[0], 6, std::span(&o, 1));
+  const std::vector<Vec3> net(patch->control_points().begin(),
+                              patch->control_points().begin() + patch->net_size());
+  const GBPatch gbp(5, 6, net);
+  const ControlNetTopology t = control_net_topology(*patch);
+  EXPECT_EQ(t.segments, control_net_topology(gbp).segments);
+  for (std::size_t k = 0; k < patch->size(); ++k) {
+    EXPECT_EQ(t.is_vector[k], k >= patch->net_size()) << k;
+    if (k < patch->net_size()) {
+      EXPECT_EQ(patch->kind(k), gbp.kind(k)) << k;
+    }
+  }
+  // Rings 0 and 1 are the default net's; the moved point sits at its default plus its offset.
+  const std::vector<Vec3> defaults = gb_face_default_net(ribbons[0], 6);
+  for (std::size_t k = 0; k < patch->net_size(); ++k) {
+    const Vec3 want = k == interior_point_index(5, 6, o) ? defaults[k] + o.by : defaults[k];
+    EXPECT_EQ(patch->control_point(k), want) << k;
+  }
 }
 
 }  // namespace

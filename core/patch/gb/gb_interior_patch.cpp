@@ -50,15 +50,24 @@ std::vector<std::size_t> free_indices(int n, int d, bool centre) {
   return out;
 }
 
-bool centre_carried(const GBRibbonPatch& f, double* scale) {
+// 1 / the largest prod_i h_i^2 found at the average of the domain vertices (the centre of the
+// regular n-gon, where it peaks) and at a coarse sample of the domain (a concave domain's average
+// vertex may lie where the product is tiny, or outside), or 0 if that is not a usable number.
+double centre_scale(const GBRibbonPatch& f) {
+  const MeanValueParameters params(f.polygon().vertices());
+  const std::vector<Vec2>& vertices = f.polygon().vertices();
+  const auto at = [&](Vec2 x) {
+    for (const Vec2& v : vertices)
+      if (x == v) return 0.0;
+    const double h = h_product(params, x).f;
+    return h * h;
+  };
   Vec2 c(0);
-  for (const Vec2& v : f.polygon().vertices()) c += v;
-  c /= double(f.polygon().vertices().size());
-  if (!inside(f.polygon().vertices(), c)) return false;
-  const double h = h_product(MeanValueParameters(f.polygon().vertices()), c).f;
-  if (!(std::isfinite(h) && h * h > 1e-200)) return false;
-  *scale = 1 / (h * h);
-  return true;
+  for (const Vec2& v : vertices) c += v;
+  c /= double(vertices.size());
+  double largest = inside(vertices, c) ? at(c) : 0;
+  for (const Vec2& x : f.polygon().tessellate(8).points) largest = std::max(largest, at(x));
+  return std::isfinite(largest) && largest > 1e-200 ? 1 / largest : 0;
 }
 
 }  // namespace
@@ -75,11 +84,10 @@ GBInteriorPatch::GBInteriorPatch(GBRibbonPatch filling, int degree,
     throw std::invalid_argument("the degree-" + std::to_string(d) + " net of a " +
                                 std::to_string(n) + "-sided face has " + std::to_string(net_size_) +
                                 " points");
-  centre_ = centre_carried(filling_, &scale_);
+  scale_ = centre_scale(filling_);
+  centre_ = scale_ > 0;
   if (!centre_ && net[0] != defaults[0])
-    throw std::invalid_argument(
-        "the central point needs the average of the domain vertices inside the domain (this "
-        "face is too concave)");
+    throw std::invalid_argument("the central point's weight vanishes on this face's domain");
   free_ = free_indices(n, d, centre_);
   free_slot_.assign(net_size_, -1);
   for (std::size_t s = 0; s < free_.size(); ++s) free_slot_[free_[s]] = int(s);

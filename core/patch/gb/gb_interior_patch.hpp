@@ -13,7 +13,9 @@
 // layers than l (behind a reflex corner, gb_ribbon_patch.hpp) carry their rows elevated in h
 // (ribbon_with_layer), so there phi_p is the combination of the elevated rows' blends. C_0 blends
 // with phi_0 = prod_i h_i^2 normalised to 1 at the average of the domain vertices (h_i the mean
-// value local parameters): zero with its first derivatives on every side.
+// value local parameters), normalised so that its largest value over the domain is 1 (at the
+// centre of the regular n-gon, the domain of every convex face): zero with its first derivatives
+// on every side.
 //
 // Every phi_p vanishes with its first derivatives on the whole boundary (rows 0 and 1 carry no
 // displacement), so the boundary curves and the cross-boundary derivatives are F's at every
@@ -40,13 +42,13 @@ namespace pl {
 class GBInteriorPatch final : public PatchType<GBInteriorPatch> {
  public:
   // A network-face form, not a scene type of its own: scenes store the face, not this patch.
-  static constexpr const char* kType = "gb-interior";
+  static constexpr const char* kType = "gb-ribbons-interior";
 
   // `defaults` and `net`: the degree-d .gbp net, GBPatch::point_count(n, d) points each (n the
   // filling's side count), `net` = defaults + offsets at the free points; rings 0 and 1 of `net`
   // should equal `defaults` (they are drawn, never blended). Throws std::invalid_argument for
   // wrong sizes, d < 3, a degree-d ribbon patch the filling's domain cannot carry, or a moved
-  // C_0 on a domain too concave for phi_0 (its normalisation point outside the domain).
+  // C_0 on a domain where phi_0 cannot be normalised (it vanishes everywhere).
   GBInteriorPatch(GBRibbonPatch filling, int degree, const std::vector<Vec3>& defaults,
                   const std::vector<Vec3>& net);
 
@@ -100,7 +102,7 @@ class GBInteriorPatch final : public PatchType<GBInteriorPatch> {
   bool displaced_ = false;  // some free point of ring >= 2 is off its default
   bool centre_ = false;
   MeanValueParameters params_;
-  double scale_ = 1;  // 1 / prod_i h_i(c)^2
+  double scale_ = 1;  // 1 / the largest prod_i h_i^2 over the domain
 };
 
 }  // namespace pl
