@@ -6,8 +6,8 @@
 #include "app/cli/draw_scene_builder.hpp"
 #include "core/base/data_error.hpp"
 #include "core/network/gb_face_free_points.hpp"
+#include "core/network/incremental_filling.hpp"
 #include "core/patch/control_net_topology.hpp"
-#include "core/patch/gb/default_net.hpp"
 #include "core/patch/gb/gb_interior_patch.hpp"
 
 namespace pl {
@@ -41,55 +41,21 @@ class SegmentSet {
 
 using PointIndex = std::map<std::array<double, 3>, uint32_t>;
 
-// What a face with interior control shows: its degree-d GB net (the G1 rings 0 and 1 and the
-// free points at default + offset), with the rows, spokes and centre links of a .gbp net; its
-// default filling's points and the free points' stored defaults (the rest of its control points)
-// are not drawn.
-struct ShownNet {
-  std::size_t count = 0;  // points [0, count) shown (the centre left out when there is none)
-  ControlNetTopology topology;
-};
-
-ShownNet shown_net(const Patch& patch) {
-  const auto* p = dynamic_cast<const GBInteriorPatch*>(&patch);
-  if (!p) return {patch.size(), control_net_topology(patch)};
-  ShownNet out{p->net_size(), {}};
-  out.topology.is_vector.assign(patch.size(), false);
-  const int n = p->sides(), d = p->degree(), l = gb_face_layers(d);
-  auto& s = out.topology.segments;
-  auto add = [&](std::size_t a, std::size_t b) {
-    if (a != b) s.push_back({uint32_t(std::min(a, b)), uint32_t(std::max(a, b))});
-  };
-  for (int i = 0; i < n; ++i) {
-    auto at = [&](int j, int k) { return gb_net_index(n, d, i, j, k); };
-    for (int k = 0; k < l; ++k)
-      for (int j = 0; j <= d; ++j) {
-        if (j < d) add(at(j, k), at(j + 1, k));      // rows
-        if (k + 1 < l) add(at(j, k), at(j, k + 1));  // spokes
-      }
-    if (p->has_centre()) {
-      add(at(d / 2, l - 1), 0);
-      add(at((d + 1) / 2, l - 1), 0);
-    }
-  }
-  return out;
-}
-
 // Adds one patch's points as a group: positions of `role` (refs from make_ref, or none), its net
 // lines and arrows. With `shared`, a boundary point found there exactly is that network point;
 // with `own`, any point found there exactly is that point (a face's free points).
 ScenePoints::Group& add_group(ScenePoints& s, SegmentSet& segments, const Patch& patch,
                               PointOwner owner, bool editable, int patch_index,
                               const PointIndex* shared, const PointIndex* own = nullptr) {
-  const ShownNet shown = shown_net(patch);
-  const ControlNetTopology& t = shown.topology;
+  // A face with interior control draws its degree-d net (control_net_topology hides the rest).
+  const ControlNetTopology t = control_net_topology(patch);
   const auto* interior = dynamic_cast<const GBInteriorPatch*>(&patch);
   ScenePoints::Group g;
   g.owner = owner;
   g.first = s.positions.size();
   g.first_arrow = s.arrows.size();
   std::vector<uint32_t> id(patch.size(), 0);
-  for (std::size_t k = 0; k < shown.count; ++k) {
+  for (std::size_t k = 0; k < patch.size(); ++k) {
     if (t.is_vector[k] || (k == 0 && interior && !interior->has_centre())) continue;
     const Vec3 p = patch.control_point(k);
     if (own) {

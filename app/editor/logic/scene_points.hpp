@@ -18,10 +18,12 @@
 
 #include "app/document/point_ref.hpp"
 #include "core/eval/scene_surfaces.hpp"
-#include "core/network/incremental_filling.hpp"
 #include "render/draw_scene.hpp"
 
 namespace pl {
+
+class IncrementalFilling;
+struct EdgeCrossTangents;
 
 // Whose a point is: a network vertex, an edge (its handles), an explicit scene patch, a
 // network face (by surface index) or a free curve.
