@@ -19,6 +19,7 @@
 #include "core/patch/control_net_topology.hpp"
 #include "core/patch/gb/default_net.hpp"
 #include "core/patch/gb/gb_interior_patch.hpp"
+#include "core/patch/gb/ribbon_elevation.hpp"
 #include "network_test_util.hpp"
 
 namespace pl {
@@ -501,6 +502,98 @@ TEST(GBFaceInterior, ThePatchShowsItsDegreeNet) {
     const Vec3 want = k == interior_point_index(5, 6, o) ? defaults[k] + o.by : defaults[k];
     EXPECT_EQ(patch->control_point(k), want) << k;
   }
+}
+
+// One face over a planar polygon lifted to z = 0.1 x y, straight cubic edges, degree d.
+Network lifted_face(const std::vector<Vec2>& polygon) {
+  Network net;
+  const int n = static_cast<int>(polygon.size());
+  for (const Vec2& p : polygon) net.vertices.push_back({p.x, p.y, 0.1 * p.x * p.y});
+  NetworkFace f;
+  for (int i = 0; i < n; ++i) {
+    const Vec3 p = net.vertices[i], q = net.vertices[(i + 1) % n];
+    net.edges.push_back({{i, (i + 1) % n}, {p + (q - p) / 3.0, p + 2.0 * (q - p) / 3.0}, ""});
+    f.loop.push_back(i);
+  }
+  f.scheme = FaceScheme::GB;
+  net.faces.push_back(f);
+  return net;
+}
+
+// The displacement S - F of a face with offsets is the degree-d independent-ribbon patch of the
+// net with the offsets minus the same patch of the net without them (the blends are linear in
+// the points), built here from whole nets: rows k of ribbon i from the .gbp net, and on the sides
+// behind a reflex corner the rows elevated until l_i >= d (ribbon_with_layer), as a face filled
+// with a degree-d net would have them. Checked on a pentagon (plain sides) and on a notch and a
+// U, whose walls need those extra layers; the boundary and the cross-boundary normals stay F's.
+TEST(GBFaceInterior, DisplacementIsTheDegreeNetsBlendsOfTheOffsets) {
+  const std::vector<Vec2> pentagon = {
+      {1, 0}, {0.309, 0.951}, {-0.809, 0.588}, {-0.809, -0.588}, {0.309, -0.951}};
+  const std::vector<Vec2> notch = {{0, 0},      {1, 0},      {1, 1},    {0.75, 1},
+                                   {0.75, 0.7}, {0.25, 0.7}, {0.25, 1}, {0, 1}};
+  const std::vector<Vec2> u = {{0, 0}, {3, 0}, {3, 2}, {2, 2}, {2, 0.8}, {1, 0.8}, {1, 2}, {0, 2}};
+  std::mt19937 rng(29);
+  std::uniform_real_distribution<double> r(-0.1, 0.1);
+  int deep_faces = 0;
+  for (const auto& [poly, name] :
+       {std::pair{pentagon, "pentagon"}, std::pair{notch, "notch"}, std::pair{u, "U"}}) {
+    const Network net = lifted_face(poly);
+    const NetworkTopology topo = validate_network(net, name);
+    std::vector<ProjectedVertex> projected;
+    const FaceRibbons ribbons = build_face_ribbons(net, topo, projected)[0];
+    const int n = int(poly.size());
+    for (int d : {5, 6, 7}) {
+      std::vector<InteriorOffset> offsets;
+      for (InteriorOffset o : free_points(n, d))
+        if (!o.centre) {
+          o.by = Vec3(r(rng), r(rng), r(rng));
+          offsets.push_back(o);
+        }
+      const auto face = gb_face_interior_patch(ribbons, d, offsets);
+      const GBRibbonPatch& filling = face->filling();
+      const std::vector<int> deep = GBRibbonPatch::sides_without_positive_pair(filling.polygon());
+      deep_faces += !deep.empty();
+      const auto ribbon_patch = [&](const std::vector<Vec3>& gbp) {
+        const int l = gb_face_layers(d);
+        std::vector<std::vector<std::vector<Vec3>>> rows(n);
+        for (int i = 0; i < n; ++i) {
+          for (int k = 0; k < l; ++k) {
+            rows[i].emplace_back();
+            for (int j = 0; j <= d; ++j) rows[i][k].push_back(gbp[gb_net_index(n, d, i, j, k)]);
+          }
+          if (std::find(deep.begin(), deep.end(), i) != deep.end())
+            while (int(rows[i].size()) < d) rows[i] = ribbon_with_layer(rows[i]);
+        }
+        return GBRibbonPatch(filling.polygon(), rows);
+      };
+      const std::vector<Vec3> defaults = gb_face_default_net(ribbons, d);
+      std::vector<Vec3> moved = defaults;
+      for (const InteriorOffset& o : offsets) moved[interior_point_index(n, d, o)] += o.by;
+      const GBRibbonPatch with = ribbon_patch(moved), without = ribbon_patch(defaults);
+      double worst = 0;
+      for (const Vec2& x : filling.domain().tessellate(16).points) {
+        const SurfaceJet s = face->evaluate(x), f = filling.evaluate(x);
+        const SurfaceJet a = with.evaluate(x), b = without.evaluate(x);
+        worst = std::max({worst, glm::length((s.p - f.p) - (a.p - b.p)),
+                          glm::length((s.su - f.su) - (a.su - b.su)),
+                          glm::length((s.sv - f.sv) - (a.sv - b.sv))});
+      }
+      // Along every side the face is its default filling: position and normal.
+      double dev = 0, angle = 0;
+      for (int i = 0; i < n; ++i)
+        for (int k = 0; k <= 32; ++k) {
+          const Vec2 x = filling.domain().side_point(i, k / 32.0);
+          const SurfaceJet s = face->evaluate(x), f = filling.evaluate(x);
+          dev = std::max(dev, glm::length(s.p - f.p));
+          angle = std::max(angle,
+                           test::angle_between_deg(glm::cross(s.su, s.sv), glm::cross(f.su, f.sv)));
+        }
+      EXPECT_LT(worst, 1e-12) << name << " degree " << d;
+      EXPECT_LT(dev, 1e-12) << name << " degree " << d;
+      EXPECT_LT(angle, 1e-6) << name << " degree " << d;
+    }
+  }
+  EXPECT_GE(deep_faces, 6);  // the notch and the U at every degree have sides with more layers
 }
 
 }  // namespace
