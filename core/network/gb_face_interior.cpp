@@ -105,18 +105,19 @@ std::vector<InteriorOffset> gb_face_offsets_for_degree(const FaceRibbons& ribbon
     if (xs.size() >= 6 * free.size()) break;
   }
   const Eigen::Index rows = static_cast<Eigen::Index>(xs.size());
-  std::vector<Jet> column(xs.size());
-  // The displacement field of the old degree, sum offset_p phi^old_p, at the samples.
+  // The displacement field of the old degree, sum offset_p phi^old_p, and the new degree's free
+  // blends at the samples: one basis evaluation per sample and patch fills a whole row.
   Eigen::MatrixXd b = Eigen::MatrixXd::Zero(rows, 3);
-  for (const InteriorOffset& o : offsets) {
-    from->influence(interior_point_index(n, old_degree, o), xs, column);
-    for (Eigen::Index s = 0; s < rows; ++s)
-      for (int c = 0; c < 3; ++c) b(s, c) += column[s].f * o.by[c];
-  }
   Eigen::MatrixXd a(rows, static_cast<Eigen::Index>(free.size()));
-  for (std::size_t p = 0; p < free.size(); ++p) {
-    to->influence(free[p], xs, column);
-    for (Eigen::Index s = 0; s < rows; ++s) a(s, Eigen::Index(p)) = column[s].f;
+  std::vector<std::size_t> at;
+  for (const InteriorOffset& o : offsets) at.push_back(interior_point_index(n, old_degree, o));
+  std::vector<Jet> phi_old(from->size()), phi_new(to->size());
+  for (Eigen::Index s = 0; s < rows; ++s) {
+    from->basis(xs[s], phi_old);
+    for (std::size_t p = 0; p < offsets.size(); ++p)
+      for (int c = 0; c < 3; ++c) b(s, c) += phi_old[at[p]].f * offsets[p].by[c];
+    to->basis(xs[s], phi_new);
+    for (std::size_t p = 0; p < free.size(); ++p) a(s, Eigen::Index(p)) = phi_new[free[p]].f;
   }
   const Eigen::MatrixXd x = a.colPivHouseholderQr().solve(b);
   double largest = 0;

@@ -4,12 +4,16 @@
 // re-evaluation of that face (every sample of its patch evaluated again, with normals and
 // curvatures) and against the refill the engine would otherwise do (the face's patch built
 // again, then evaluated). Measured in the same run at the editor's densities (16 while dragging,
-// 48 at rest) and at ~100k samples.
+// 48 at rest) and at ~100k samples, with the one-off influence column build at drag start.
+#include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <vector>
 
 #include "bench_common.hpp"
 #include "core/eval/scene_evaluation.hpp"
 #include "core/network/gb_face.hpp"
+#include "core/network/gb_face_interior.hpp"
 
 namespace pl::bench {
 
@@ -44,7 +48,7 @@ Scene pentagon_scene() {
 
 void bench_interior(const Options& o) {
   Scene scene = pentagon_scene();
-  for (int density : {16, 48, 200}) {
+  for (int density : {16, 48, 224}) {
     if (o.quick && density > 16) break;
     SceneEvaluation ev(scene, density, std::nullopt, "bench");
     const PatchEvaluator& face = *ev.surfaces().surfaces.at(0).evaluator;
@@ -63,16 +67,30 @@ void bench_interior(const Options& o) {
     PatchEvaluator full(std::shared_ptr<Patch>(face.patch().clone()),
                         ev.cache().get(face.patch().domain(), density));
     const double full_ms = median_ms(o.quick ? 2 : 15, [&] { full.evaluate_all(); });
+    // The one-off cost at drag start: the dragged point's influence column (evaluate_all drops
+    // the cached columns first, untimed).
+    const std::size_t k = interior_point_index(5, 6, {.side = 1, .j = 3, .layer = 2});
+    std::vector<double> columns;
+    for (int r = 0; r < (o.quick ? 2 : 9); ++r) {
+      full.evaluate_all();
+      const auto a = std::chrono::steady_clock::now();
+      full.prepare_influence(k);
+      columns.push_back(
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - a).count());
+    }
+    std::nth_element(columns.begin(), columns.begin() + columns.size() / 2, columns.end());
+    const double column_ms = columns[columns.size() / 2];
     // The refill: the face's patch built from its ribbons, then evaluated.
     const double refill_ms = median_ms(o.quick ? 2 : 15, [&] {
       PatchEvaluator e(std::shared_ptr<Patch>(ev.filling().build(0).patch),
                        ev.cache().get(face.patch().domain(), density));
     });
-    const std::string tag = density == 200 ? "_100k" : "_d" + std::to_string(density);
+    const std::string tag = density == 224 ? "_100k" : "_d" + std::to_string(density);
     figure(("interior_drag_ms" + tag).c_str(), drag_ms, "ms");
     figure(("interior_face_full_eval_ms" + tag).c_str(), full_ms, "ms");
     figure(("interior_face_refill_ms" + tag).c_str(), refill_ms, "ms");
     figure(("interior_drag_speedup" + tag).c_str(), full_ms / drag_ms, "x");
+    figure(("interior_drag_column_ms" + tag).c_str(), column_ms, "ms");
     figure(("interior_samples" + tag).c_str(), double(face.sample_count()), "samples");
     if (density == 48) {  // the editor's density at rest: the figures under their plain names
       figure("interior_drag_ms", drag_ms, "ms");

@@ -5,11 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <random>
 #include <sstream>
 
 #include "core/base/data_error.hpp"
+#include "core/eval/scene_evaluation.hpp"
 #include "core/io/scene_io.hpp"
 #include "core/network/face_ribbons.hpp"
 #include "core/network/gb_face.hpp"
@@ -17,6 +19,7 @@
 #include "core/patch/control_net_topology.hpp"
 #include "core/patch/gb/default_net.hpp"
 #include "core/patch/gb/gb_interior_patch.hpp"
+#include "core/patch/gb/ribbon_elevation.hpp"
 #include "network_test_util.hpp"
 
 namespace pl {
@@ -69,11 +72,40 @@ std::vector<Vec2> domain_samples(const Patch& p) {
   return xs;
 }
 
+// The sample networks with GB faces (every assets/*.json whose network has a face filled GB:
+// among them the pentagon and hexagon of gb-hole-filling.json, which share an edge, and the
+// concave faces of gb-concave-l.json), and the sphere blob with every face GB.
+std::vector<std::pair<std::string, Network>> networks_with_gb_faces() {
+  std::vector<std::pair<std::string, Network>> out;
+  std::vector<std::filesystem::path> files;
+  for (const auto& e :
+       std::filesystem::directory_iterator(std::string(PATCHLAB_SOURCE_DIR) + "/assets"))
+    if (e.path().extension() == ".json") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  for (const auto& path : files) {
+    std::ifstream in(path);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    const Scene scene = parse_scene(ss.str(), path.string());
+    if (!scene.network) continue;
+    for (const NetworkFace& f : scene.network->faces)
+      if (resolve_scheme(f, std::nullopt) == FaceScheme::GB) {
+        out.emplace_back(path.filename().string(), *scene.network);
+        break;
+      }
+  }
+  out.emplace_back("sphere-blob, every face GB", all_gb(test::sphere_blob(true)));
+  return out;
+}
+
+// 200 random moves of free points per network, followed by the incremental engine (the editor's
+// drag path); after every move the boundaries are measured against the edge curves and the
+// normals across every shared edge from both faces' patches (test::max_g1_angle_deg).
 TEST(GBFaceInterior, RandomMovesOfFreePointsKeepBoundariesAndG1) {
   std::mt19937 rng(7);
-  for (const char* file : {"gb-hole-filling.json", "gb-concave-l.json", "sphere-blob"}) {
-    Network n =
-        std::string(file) == "sphere-blob" ? all_gb(test::sphere_blob(true)) : load_network(file);
+  const auto networks = networks_with_gb_faces();
+  ASSERT_GE(networks.size(), 4u);  // default, gb-concave-l, gb-hole-filling, gb-interior + blob
+  for (auto [file, n] : networks) {
     const double size = network_size(n);
     std::vector<int> gb;
     for (std::size_t f = 0; f < n.faces.size(); ++f)
@@ -81,12 +113,15 @@ TEST(GBFaceInterior, RandomMovesOfFreePointsKeepBoundariesAndG1) {
         n.faces[f].degree = 5 + int(f % 3);  // 5, 6, 7: free rows and the centre
         gb.push_back(int(f));
       }
-    ASSERT_FALSE(gb.empty());
+    Scene scene;
+    scene.network = n;
+    SceneEvaluation ev(scene, 8, std::nullopt);
     Measure worst;
     std::uniform_real_distribution<double> u(-0.1, 0.1);
-    const int moves = std::string(file) == "sphere-blob" ? 60 : 70;
-    for (int m = 0; m < moves; ++m) {
-      NetworkFace& face = n.faces[gb[rng() % gb.size()]];
+    constexpr int kMoves = 200;
+    std::size_t moved = 0;
+    for (int m = 0; m < kMoves; ++m) {
+      NetworkFace& face = scene.network->faces[gb[rng() % gb.size()]];
       const auto points = free_points(int(face.loop.size()), face.degree);
       InteriorOffset o = points[rng() % points.size()];
       const auto same = std::find_if(face.offsets.begin(), face.offsets.end(), [&](auto& x) {
@@ -99,14 +134,26 @@ TEST(GBFaceInterior, RandomMovesOfFreePointsKeepBoundariesAndG1) {
         o.by = by;
         face.offsets.push_back(o);
       }
-      const Measure now = measure(n);
-      worst.deviation = std::max(worst.deviation, now.deviation);
-      worst.angle_deg = std::max(worst.angle_deg, now.angle_deg);
+      moved += ev.sync(scene).moved_points;
+      std::vector<test::FaceSurface> faces;
+      for (const SceneSurface& s : ev.surfaces().surfaces)
+        if (s.face >= 0) faces.push_back({&s.evaluator->patch(), &s.patch_side});
+      const NetworkTopology& topo = ev.filling().topology();
+      worst.deviation = std::max(worst.deviation,
+                                 test::max_boundary_deviation(*scene.network, topo, faces) / size);
+      worst.angle_deg = std::max(worst.angle_deg, test::max_g1_angle_deg(topo, faces));
     }
-    std::printf("%s: %d random free-point moves, boundary %.3g (relative), G1 %.3g deg\n", file,
-                moves, worst.deviation, worst.angle_deg);
+    // and the same network filled from scratch
+    const Measure scratch = measure(*scene.network);
+    std::printf(
+        "%s: %d random free-point moves (%zu points moved incrementally), boundary %.3g "
+        "(relative), G1 %.3g deg; from scratch %.3g, %.3g deg\n",
+        file.c_str(), kMoves, moved, worst.deviation, worst.angle_deg, scratch.deviation,
+        scratch.angle_deg);
     EXPECT_LT(worst.deviation, 1e-12) << file;
     EXPECT_LT(worst.angle_deg, 1e-6) << file;
+    EXPECT_LT(scratch.deviation, 1e-12) << file;
+    EXPECT_LT(scratch.angle_deg, 1e-6) << file;
   }
 }
 
@@ -170,46 +217,55 @@ TEST(GBFaceInterior, ZeroOffsetsAtDegreeThreeAreTheFaceWithoutInteriorControl) {
   }
 }
 
+// After a vertex move every free point of the face's patch is its new default plus its stored
+// offset (the pentagon of gb-hole-filling and the concave hexagon of gb-concave-l, every free
+// point offset), and the network stays G1.
 TEST(GBFaceInterior, OffsetsFollowTheBoundary) {
-  Network n = load_network("gb-hole-filling.json");
-  NetworkFace& pent = n.faces[0];
-  ASSERT_EQ(pent.loop.size(), 5u);
-  pent.degree = 6;
-  pent.offsets = {{.centre = true, .by = {0.1, -0.2, 0.3}},
-                  {.side = 1, .j = 3, .layer = 2, .by = {0, 0, 0.2}},
-                  {.side = 2, .j = 2, .layer = 2, .by = {0.05, 0, -0.1}}};
-  const auto check = [&](const Network& net) {
-    const NetworkTopology topo = validate_network(net, "test");
-    std::vector<ProjectedVertex> projected;
-    const auto ribbons = build_face_ribbons(net, topo, projected);
-    const std::vector<Vec3> defaults = gb_face_default_net(ribbons[0], 6);
-    const auto patch = gb_face_patch(ribbons[0], 6, pent.offsets);
-    const auto& c = dynamic_cast<const GBInteriorPatch&>(*patch);
-    double worst = 0;
-    for (const InteriorOffset& o : pent.offsets) {
-      const std::size_t k = o.centre ? 0 : gb_net_index(5, 6, o.side, o.j, o.layer);
-      worst = std::max(worst, glm::length(c.control_point(k) - (defaults[k] + o.by)));
+  std::mt19937 rng(19);
+  std::uniform_real_distribution<double> u(-0.05, 0.05);
+  for (const char* file : {"gb-hole-filling.json", "gb-concave-l.json"}) {
+    Network n = load_network(file);
+    NetworkFace& face = n.faces[0];
+    face.scheme = FaceScheme::GB;
+    face.degree = 6;
+    const int sides = int(face.loop.size());
+    const double size = network_size(n);
+    for (const InteriorOffset& p : free_points(sides, 6)) {
+      InteriorOffset o = p;
+      o.by = Vec3(u(rng), u(rng), u(rng)) * size;
+      face.offsets.push_back(o);
     }
-    // an unmoved free point sits at its default
-    const std::size_t still = gb_net_index(5, 6, 3, 3, 2);
-    worst = std::max(worst, glm::length(c.control_point(still) - defaults[still]));
-    return std::pair{worst, defaults};
-  };
-  const auto [before, defaults_before] = check(n);
-  // Move a vertex of the pentagon with its edges' handles.
-  const int v = pent.loop[1];
-  const Vec3 d(0.07, -0.04, 0.11);
-  n.vertices[v] += d;
-  for (NetworkEdge& e : n.edges)
-    for (int s = 0; s < 2; ++s)
-      if (e.v[s] == v) e.handles[s] += d;
-  const auto [after, defaults_after] = check(n);
-  EXPECT_LT(before, 1e-12);
-  EXPECT_LT(after, 1e-12);
-  EXPECT_GT(glm::length(defaults_after[0] - defaults_before[0]), 1e-3);  // the defaults moved
-  const Measure m = measure(n);
-  EXPECT_LT(m.deviation, 1e-12);
-  EXPECT_LT(m.angle_deg, 1e-6);
+    const auto check = [&](const Network& net) {
+      const NetworkTopology topo = validate_network(net, "test");
+      std::vector<ProjectedVertex> projected;
+      const auto ribbons = build_face_ribbons(net, topo, projected);
+      const std::vector<Vec3> defaults = gb_face_default_net(ribbons[0], 6);
+      const auto patch = gb_face_patch(ribbons[0], 6, face.offsets);
+      const auto& c = dynamic_cast<const GBInteriorPatch&>(*patch);
+      EXPECT_EQ(c.free_points().size(), face.offsets.size()) << file;
+      double worst = 0;
+      for (const InteriorOffset& o : face.offsets) {
+        const std::size_t k = interior_point_index(sides, 6, o);
+        worst = std::max(worst, glm::length(c.control_point(k) - (defaults[k] + o.by)) / size);
+      }
+      return std::pair{worst, defaults};
+    };
+    const auto [before, defaults_before] = check(n);
+    // Move a vertex of the face with its edges' handles.
+    const int v = face.loop[1];
+    const Vec3 d(0.07, -0.04, 0.11);
+    n.vertices[v] += d;
+    for (NetworkEdge& e : n.edges)
+      for (int s = 0; s < 2; ++s)
+        if (e.v[s] == v) e.handles[s] += d;
+    const auto [after, defaults_after] = check(n);
+    EXPECT_LT(before, 1e-12) << file;
+    EXPECT_LT(after, 1e-12) << file;
+    EXPECT_GT(glm::length(defaults_after[0] - defaults_before[0]), 1e-3) << file;  // they moved
+    const Measure m = measure(n);
+    EXPECT_LT(m.deviation, 1e-12) << file;
+    EXPECT_LT(m.angle_deg, 1e-6) << file;
+  }
 }
 
 // A planar boundary with planar cross-boundary data: every default lies on the plane (the
@@ -236,16 +292,34 @@ TEST(GBFaceInterior, PlanarFaceStaysPlanarAtEveryDegree) {
   }
 }
 
-TEST(GBFaceInterior, RaisingTheDegreeKeepsBoundariesAndSideNormals) {
+// Changing the degree of every face, with offsets re-fitted by gb_face_offsets_for_degree from
+// degree 5 (random offsets on every free point), keeps the boundary curves and the normals along
+// every side: those of the degree-5 faces, measured side by side.
+TEST(GBFaceInterior, ChangingTheDegreeKeepsBoundariesAndSideNormals) {
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> u(-0.05, 0.05);
   for (const char* file : {"gb-hole-filling.json", "gb-concave-l.json"}) {
-    const Network base = all_gb(load_network(file));
+    Network base = all_gb(load_network(file));
+    const double size = network_size(base);
+    for (NetworkFace& f : base.faces) {
+      f.degree = 5;
+      for (InteriorOffset o : free_points(int(f.loop.size()), 5)) {
+        o.by = Vec3(u(rng), u(rng), u(rng)) * size;
+        f.offsets.push_back(o);
+      }
+    }
     const NetworkTopology topo = validate_network(base, "test");
-    const NetworkFilling cubic = fill_network(base, topo, std::nullopt, "test");
-    for (int d = 4; d <= 9; ++d) {
+    std::vector<ProjectedVertex> projected;
+    const auto ribbons = build_face_ribbons(base, topo, projected);
+    const NetworkFilling five = fill_network(base, topo, std::nullopt, "test");
+    for (int d = 3; d <= 9; ++d) {
       Network n = base;
-      for (NetworkFace& f : n.faces) f.degree = d;
-      const NetworkFilling raised = fill_network(n, topo, std::nullopt, "test");
-      const auto faces = test::surfaces(raised), before = test::surfaces(cubic);
+      for (std::size_t f = 0; f < n.faces.size(); ++f) {
+        n.faces[f].offsets = gb_face_offsets_for_degree(ribbons[f], 5, base.faces[f].offsets, d);
+        n.faces[f].degree = d;
+      }
+      const NetworkFilling changed = fill_network(n, topo, std::nullopt, "test");
+      const auto faces = test::surfaces(changed), before = test::surfaces(five);
       double angle = 0;
       for (std::size_t f = 0; f < n.faces.size(); ++f)
         for (std::size_t i = 0; i < n.faces[f].loop.size(); ++i)
@@ -255,9 +329,38 @@ TEST(GBFaceInterior, RaisingTheDegreeKeepsBoundariesAndSideNormals) {
                                         test::side_normal(faces[f], topo, int(f), int(i), t),
                                         test::side_normal(before[f], topo, int(f), int(i), t)));
           }
-      EXPECT_LT(test::max_boundary_deviation(n, topo, faces) / network_size(n), 1e-12)
+      EXPECT_LT(test::max_boundary_deviation(n, topo, faces) / size, 1e-12)
           << file << " degree " << d;
       EXPECT_LT(angle, 1e-6) << file << " degree " << d;
+      EXPECT_LT(test::max_g1_angle_deg(topo, faces), 1e-6) << file << " degree " << d;
+    }
+  }
+}
+
+// With no offsets the face is its default filling at every degree: the cubic face without
+// interior control (gb_face_patch of the ribbons), on a dense sample, convex and concave faces.
+TEST(GBFaceInterior, ZeroOffsetsAreTheDefaultFillingAtEveryDegree) {
+  for (const char* file : {"gb-hole-filling.json", "gb-concave-l.json"}) {
+    const Network n = all_gb(load_network(file));
+    const NetworkTopology topo = validate_network(n, "test");
+    std::vector<ProjectedVertex> projected;
+    const auto ribbons = build_face_ribbons(n, topo, projected);
+    const double size = network_size(n);
+    for (std::size_t f = 0; f < n.faces.size(); ++f) {
+      const auto plain = gb_face_patch(ribbons[f]);
+      const std::vector<Vec2> xs = plain->domain().tessellate(24).points;
+      for (int d = 3; d <= 9; ++d) {
+        // every free point named with a zero offset
+        std::vector<InteriorOffset> zero = free_points(int(n.faces[f].loop.size()), d);
+        const auto face = gb_face_patch(ribbons[f], d, zero);
+        double worst = 0;
+        for (const Vec2& x : xs) {
+          const SurfaceJet a = plain->evaluate(x), b = face->evaluate(x);
+          worst = std::max({worst, glm::length(a.p - b.p), glm::length(a.su - b.su),
+                            glm::length(a.sv - b.sv), glm::length(a.suu - b.suu)});
+        }
+        EXPECT_LT(worst / size, 1e-12) << file << " face " << f << " degree " << d;
+      }
     }
   }
 }
@@ -399,6 +502,98 @@ TEST(GBFaceInterior, ThePatchShowsItsDegreeNet) {
     const Vec3 want = k == interior_point_index(5, 6, o) ? defaults[k] + o.by : defaults[k];
     EXPECT_EQ(patch->control_point(k), want) << k;
   }
+}
+
+// One face over a planar polygon lifted to z = 0.1 x y, straight cubic edges, degree d.
+Network lifted_face(const std::vector<Vec2>& polygon) {
+  Network net;
+  const int n = static_cast<int>(polygon.size());
+  for (const Vec2& p : polygon) net.vertices.push_back({p.x, p.y, 0.1 * p.x * p.y});
+  NetworkFace f;
+  for (int i = 0; i < n; ++i) {
+    const Vec3 p = net.vertices[i], q = net.vertices[(i + 1) % n];
+    net.edges.push_back({{i, (i + 1) % n}, {p + (q - p) / 3.0, p + 2.0 * (q - p) / 3.0}, ""});
+    f.loop.push_back(i);
+  }
+  f.scheme = FaceScheme::GB;
+  net.faces.push_back(f);
+  return net;
+}
+
+// The displacement S - F of a face with offsets is the degree-d independent-ribbon patch of the
+// net with the offsets minus the same patch of the net without them (the blends are linear in
+// the points), built here from whole nets: rows k of ribbon i from the .gbp net, and on the sides
+// behind a reflex corner the rows elevated until l_i >= d (ribbon_with_layer), as a face filled
+// with a degree-d net would have them. Checked on a pentagon (plain sides) and on a notch and a
+// U, whose walls need those extra layers; the boundary and the cross-boundary normals stay F's.
+TEST(GBFaceInterior, DisplacementIsTheDegreeNetsBlendsOfTheOffsets) {
+  const std::vector<Vec2> pentagon = {
+      {1, 0}, {0.309, 0.951}, {-0.809, 0.588}, {-0.809, -0.588}, {0.309, -0.951}};
+  const std::vector<Vec2> notch = {{0, 0},      {1, 0},      {1, 1},    {0.75, 1},
+                                   {0.75, 0.7}, {0.25, 0.7}, {0.25, 1}, {0, 1}};
+  const std::vector<Vec2> u = {{0, 0}, {3, 0}, {3, 2}, {2, 2}, {2, 0.8}, {1, 0.8}, {1, 2}, {0, 2}};
+  std::mt19937 rng(29);
+  std::uniform_real_distribution<double> r(-0.1, 0.1);
+  int deep_faces = 0;
+  for (const auto& [poly, name] :
+       {std::pair{pentagon, "pentagon"}, std::pair{notch, "notch"}, std::pair{u, "U"}}) {
+    const Network net = lifted_face(poly);
+    const NetworkTopology topo = validate_network(net, name);
+    std::vector<ProjectedVertex> projected;
+    const FaceRibbons ribbons = build_face_ribbons(net, topo, projected)[0];
+    const int n = int(poly.size());
+    for (int d : {5, 6, 7}) {
+      std::vector<InteriorOffset> offsets;
+      for (InteriorOffset o : free_points(n, d))
+        if (!o.centre) {
+          o.by = Vec3(r(rng), r(rng), r(rng));
+          offsets.push_back(o);
+        }
+      const auto face = gb_face_interior_patch(ribbons, d, offsets);
+      const GBRibbonPatch& filling = face->filling();
+      const std::vector<int> deep = GBRibbonPatch::sides_without_positive_pair(filling.polygon());
+      deep_faces += !deep.empty();
+      const auto ribbon_patch = [&](const std::vector<Vec3>& gbp) {
+        const int l = gb_face_layers(d);
+        std::vector<std::vector<std::vector<Vec3>>> rows(n);
+        for (int i = 0; i < n; ++i) {
+          for (int k = 0; k < l; ++k) {
+            rows[i].emplace_back();
+            for (int j = 0; j <= d; ++j) rows[i][k].push_back(gbp[gb_net_index(n, d, i, j, k)]);
+          }
+          if (std::find(deep.begin(), deep.end(), i) != deep.end())
+            while (int(rows[i].size()) < d) rows[i] = ribbon_with_layer(rows[i]);
+        }
+        return GBRibbonPatch(filling.polygon(), rows);
+      };
+      const std::vector<Vec3> defaults = gb_face_default_net(ribbons, d);
+      std::vector<Vec3> moved = defaults;
+      for (const InteriorOffset& o : offsets) moved[interior_point_index(n, d, o)] += o.by;
+      const GBRibbonPatch with = ribbon_patch(moved), without = ribbon_patch(defaults);
+      double worst = 0;
+      for (const Vec2& x : filling.domain().tessellate(16).points) {
+        const SurfaceJet s = face->evaluate(x), f = filling.evaluate(x);
+        const SurfaceJet a = with.evaluate(x), b = without.evaluate(x);
+        worst = std::max({worst, glm::length((s.p - f.p) - (a.p - b.p)),
+                          glm::length((s.su - f.su) - (a.su - b.su)),
+                          glm::length((s.sv - f.sv) - (a.sv - b.sv))});
+      }
+      // Along every side the face is its default filling: position and normal.
+      double dev = 0, angle = 0;
+      for (int i = 0; i < n; ++i)
+        for (int k = 0; k <= 32; ++k) {
+          const Vec2 x = filling.domain().side_point(i, k / 32.0);
+          const SurfaceJet s = face->evaluate(x), f = filling.evaluate(x);
+          dev = std::max(dev, glm::length(s.p - f.p));
+          angle = std::max(angle,
+                           test::angle_between_deg(glm::cross(s.su, s.sv), glm::cross(f.su, f.sv)));
+        }
+      EXPECT_LT(worst, 1e-12) << name << " degree " << d;
+      EXPECT_LT(dev, 1e-12) << name << " degree " << d;
+      EXPECT_LT(angle, 1e-6) << name << " degree " << d;
+    }
+  }
+  EXPECT_GE(deep_faces, 6);  // the notch and the U at every degree have sides with more layers
 }
 
 }  // namespace

@@ -132,7 +132,6 @@ GBInteriorPatch::GBInteriorPatch(GBRibbonPatch filling, int degree,
       for (const Term& t : terms_[s]) users_[t.q].push_back({s, t.c});
     for (std::size_t q = 0; q < users_.size(); ++q)
       if (!users_[q].empty()) update_blend_point(q);
-    update_displaced();
   }
 }
 
@@ -157,13 +156,10 @@ void GBInteriorPatch::update_blend_point(std::size_t q) {
     const std::size_t k = free_[s];
     w += c * (points_[k] - points_[net_size_ + filling_.size() + s]);
   }
+  const bool was = blends_->control_point(q) != Vec3(0), is = w != Vec3(0);
+  if (is && !was) ++displaced_points_;
+  if (was && !is) --displaced_points_;
   blends_->set_control_point(q, w);
-}
-
-void GBInteriorPatch::update_displaced() {
-  displaced_ = false;
-  if (blends_)
-    for (const Vec3& w : blends_->control_points()) displaced_ = displaced_ || w != Vec3(0);
 }
 
 void GBInteriorPatch::set_control_point(std::size_t k, const Vec3& p) {
@@ -179,7 +175,6 @@ void GBInteriorPatch::set_control_point(std::size_t k, const Vec3& p) {
   }
   if (free_[slot] == 0 && !centre_) return;
   for (const Term& t : terms_[slot]) update_blend_point(t.q);
-  if (!terms_[slot].empty()) update_displaced();
 }
 
 Jet GBInteriorPatch::centre_weight(Vec2 x) const {
@@ -221,7 +216,7 @@ void GBInteriorPatch::basis(Vec2 x, std::span<Jet> out) const {
 }
 
 void GBInteriorPatch::add_displacement(Vec2 x, SurfaceJet& s) const {
-  if (displaced_) {
+  if (displaced_points_ > 0) {
     const SurfaceJet d = blends_->evaluate(x);
     s.p += d.p;
     s.su += d.su;
@@ -244,7 +239,7 @@ SurfaceJet GBInteriorPatch::evaluate(Vec2 x) const {
 
 void GBInteriorPatch::evaluate_many(std::span<const Vec2> xs, std::span<SurfaceJet> out) const {
   filling_.evaluate_many(xs, out);
-  if (!displaced_ && !(centre_ && offset(0) != Vec3(0))) return;
+  if (displaced_points_ == 0 && !(centre_ && offset(0) != Vec3(0))) return;
   for (std::size_t i = 0; i < xs.size() && i < out.size(); ++i) add_displacement(xs[i], out[i]);
 }
 

@@ -85,7 +85,6 @@ class GBInteriorPatch final : public PatchType<GBInteriorPatch> {
   Jet centre_weight(Vec2 x) const;
   // The displacement of blend storage point q: sum over its terms of c (C_p - D_p).
   void update_blend_point(std::size_t q);
-  void update_displaced();
   void add_displacement(Vec2 x, SurfaceJet& s) const;
   std::size_t free_slot(std::size_t k) const { return static_cast<std::size_t>(free_slot_[k]); }
 
@@ -99,7 +98,7 @@ class GBInteriorPatch final : public PatchType<GBInteriorPatch> {
   std::vector<int> free_slot_;            // [net index] -> position in free_, or -1
   std::vector<std::vector<Term>> terms_;  // [free slot] -> blend storage points
   std::vector<std::vector<std::pair<std::size_t, double>>> users_;  // [q] -> (free slot, c)
-  bool displaced_ = false;  // some free point of ring >= 2 is off its default
+  std::size_t displaced_points_ = 0;  // blend points with a non-zero displacement
   bool centre_ = false;
   MeanValueParameters params_;
   double scale_ = 1;  // 1 / the largest prod_i h_i^2 over the domain
