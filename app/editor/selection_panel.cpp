@@ -98,8 +98,8 @@ void interior_section(const SidePanel& p, int face) {
   if (!s->has_interior) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped(
-        "No free interior: a Gregory face's inner points are all G1 data (the twins follow the "
-        "network). Set the scheme to GB to shape its inside.");
+        "Gregory faces have no free interior: all their inner points are G1 data (they follow "
+        "the network).");
     ImGui::PopStyleColor();
     return;
   }
