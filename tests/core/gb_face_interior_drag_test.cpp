@@ -128,5 +128,26 @@ TEST(GBFaceInteriorDrag, DegreeChangesAndFirstOffsetsRefill) {
   EXPECT_LT(largest_difference(ev, SceneEvaluation(s, 12, std::nullopt), size), 1e-12);
 }
 
+// With compact samples (positions and geometry only) an interior edit re-evaluates the face's
+// patch as moved, and agrees with a fresh evaluation.
+TEST(GBFaceInteriorDrag, CompactStorageFollowsInteriorEdits) {
+  Scene s = load("gb-hole-filling.json");
+  s.network->faces[0].degree = 6;
+  SceneEvaluation ev(s, 12, std::nullopt, "t", SampleStorage::Compact);
+  s.network->faces[0].offsets.push_back({.side = 3, .j = 3, .layer = 2, .by = {0, 0.1, 0.2}});
+  const SyncStats st = ev.sync(s);
+  EXPECT_EQ(st.rebuilt_surfaces, 0u);
+  EXPECT_EQ(st.changed_surfaces, std::vector<int>{0});
+  const SceneEvaluation fresh(s, 12, std::nullopt, "t", SampleStorage::Compact);
+  const PatchEvaluator &a = *ev.surfaces().surfaces[0].evaluator,
+                       &b = *fresh.surfaces().surfaces[0].evaluator;
+  ASSERT_EQ(a.sample_count(), b.sample_count());
+  double worst = 0;
+  for (std::size_t i = 0; i < a.sample_count(); ++i)
+    worst = std::max({worst, glm::length(a.position(i) - b.position(i)),
+                      glm::length(a.geometry()[i].normal - b.geometry()[i].normal)});
+  EXPECT_LT(worst, 1e-12);
+}
+
 }  // namespace
 }  // namespace pl
