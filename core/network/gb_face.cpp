@@ -6,7 +6,6 @@
 #include "core/curve/bezier_curve.hpp"
 #include "core/domain/convex_polygon.hpp"
 #include "core/domain/domain_from_boundary.hpp"
-#include "core/network/gb_face_interior.hpp"
 #include "core/patch/gb/ribbon_elevation.hpp"
 
 namespace pl {
@@ -169,19 +168,6 @@ FaceRibbons ribbons_as_filled(const FaceRibbons& input) {
   for (double a : face_turning_angles(input))
     if (!(a > -1e-9)) return orient_reflex_corners(input);
   return input;
-}
-
-std::unique_ptr<GBInteriorPatch> gb_face_interior_patch(const FaceRibbons& input, int degree,
-                                                        std::span<const InteriorOffset> offsets,
-                                                        GBDomainKind* used) {
-  std::unique_ptr<GBRibbonPatch> filling = gb_face_patch(input, used);
-  return gb_interior_face_patch(ribbons_as_filled(input), std::move(*filling), degree, offsets);
-}
-
-std::unique_ptr<Patch> gb_face_patch(const FaceRibbons& input, int degree,
-                                     std::span<const InteriorOffset> offsets, GBDomainKind* used) {
-  if (!gb_face_interior_form(degree, offsets)) return gb_face_patch(input, used);
-  return gb_face_interior_patch(input, degree, offsets, used);
 }
 
 }  // namespace pl

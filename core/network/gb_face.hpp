@@ -6,11 +6,9 @@
 #pragma once
 
 #include <memory>
-#include <span>
 #include <vector>
 
 #include "core/network/face_ribbons.hpp"
-#include "core/patch/gb/gb_interior_patch.hpp"
 #include "core/patch/gb/gb_ribbon_patch.hpp"
 
 namespace pl {
@@ -40,21 +38,5 @@ std::unique_ptr<GBRibbonPatch> gb_face_patch(const FaceRibbons& ribbons,
 // The ribbons the GB patch of a face is built from: the input for a convex face, the reflex
 // corners oriented (orient_reflex_corners) otherwise.
 FaceRibbons ribbons_as_filled(const FaceRibbons& ribbons);
-
-// The same face with interior control (core/network/gb_face_interior.hpp): the patch above as
-// its default filling plus the offsets of the free points of the degree-d net. Degree 3 without
-// offsets gives the patch above itself (the interior form equals it and shows the same surface).
-std::unique_ptr<Patch> gb_face_patch(const FaceRibbons& ribbons, int degree,
-                                     std::span<const InteriorOffset> offsets,
-                                     GBDomainKind* used = nullptr);
-// Whether gb_face_patch gives the interior form (GBInteriorPatch) for this degree and offsets:
-// every degree but 3, and degree 3 with offsets.
-inline bool gb_face_interior_form(int degree, std::span<const InteriorOffset> offsets) {
-  return degree != 3 || !offsets.empty();
-}
-// Always the interior form (GBInteriorPatch), at any degree.
-std::unique_ptr<GBInteriorPatch> gb_face_interior_patch(const FaceRibbons& ribbons, int degree,
-                                                        std::span<const InteriorOffset> offsets,
-                                                        GBDomainKind* used = nullptr);
 
 }  // namespace pl

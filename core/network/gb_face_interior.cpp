@@ -6,7 +6,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/network/gb_face.hpp"
 #include "core/patch/gb/default_net.hpp"
 
 namespace pl {
@@ -53,6 +52,19 @@ void check_degree(int d) {
 }
 
 }  // namespace
+
+std::unique_ptr<GBInteriorPatch> gb_face_interior_patch(const FaceRibbons& input, int degree,
+                                                        std::span<const InteriorOffset> offsets,
+                                                        GBDomainKind* used) {
+  std::unique_ptr<GBRibbonPatch> filling = gb_face_patch(input, used);
+  return gb_interior_face_patch(ribbons_as_filled(input), std::move(*filling), degree, offsets);
+}
+
+std::unique_ptr<Patch> gb_face_patch(const FaceRibbons& input, int degree,
+                                     std::span<const InteriorOffset> offsets, GBDomainKind* used) {
+  if (!gb_face_interior_form(degree, offsets)) return gb_face_patch(input, used);
+  return gb_face_interior_patch(input, degree, offsets, used);
+}
 
 std::vector<Vec3> gb_face_default_net(const FaceRibbons& ribbons, int d) {
   check_degree(d);

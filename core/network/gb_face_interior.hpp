@@ -22,10 +22,28 @@
 #include <vector>
 
 #include "core/network/face_ribbons.hpp"
+#include "core/network/gb_face.hpp"
 #include "core/patch/gb/gb_interior_patch.hpp"
 #include "core/scene/network.hpp"
 
 namespace pl {
+
+// The GB patch of a network face with degree d and these offsets: the default filling
+// gb_face_patch(ribbons) (gb_face.hpp) itself for degree 3 without offsets, the interior form
+// below otherwise (gb_face_interior_form). Throws std::invalid_argument like gb_face_patch and
+// gb_interior_face_patch.
+std::unique_ptr<Patch> gb_face_patch(const FaceRibbons& ribbons, int degree,
+                                     std::span<const InteriorOffset> offsets,
+                                     GBDomainKind* used = nullptr);
+// Whether gb_face_patch gives the interior form (GBInteriorPatch) for this degree and offsets:
+// every degree but 3, and degree 3 with offsets.
+inline bool gb_face_interior_form(int degree, std::span<const InteriorOffset> offsets) {
+  return degree != 3 || !offsets.empty();
+}
+// Always the interior form, at any degree (ribbons as the network gives them).
+std::unique_ptr<GBInteriorPatch> gb_face_interior_patch(const FaceRibbons& ribbons, int degree,
+                                                        std::span<const InteriorOffset> offsets,
+                                                        GBDomainKind* used = nullptr);
 
 // The face of degree d with these offsets over the default filling `filling`, built from
 // `ribbons` as filled (reflex corners already oriented, gb_face.hpp: ribbons_as_filled). Throws

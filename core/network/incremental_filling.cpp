@@ -7,7 +7,6 @@
 #include <utility>
 
 #include "core/base/data_error.hpp"
-#include "core/network/gb_face.hpp"
 #include "core/network/gb_face_interior.hpp"
 
 namespace pl {

@@ -12,8 +12,8 @@
 //     filled before keeps that face's patch, so only new or changed faces are built (a GB
 //     patch costs ~0.1 ms to build) and evaluated.
 //   - an interior edit (a GB face's offsets changed, nothing else: its ribbons, scheme and degree
-//     are the same, and its patch is the interior form before and after, gb_face.hpp): the face
-//     is not refilled. Its patch differs from the one the caller holds only in the free points
+//     are the same, and its patch is the interior form before and after, gb_face_interior.hpp): the
+//     face is not refilled. Its patch differs from the one the caller holds only in the free points
 //     whose offsets changed (GBInteriorPatch: the defaults depend on the ribbons alone), so it is
 //     listed in interior_edited and the caller moves those points (SceneEvaluation: an axpy with
 //     each point's influence column). A drag of a free point costs no patch build.

@@ -6,6 +6,7 @@
 #include "core/base/data_error.hpp"
 #include "core/network/face_ribbons.hpp"
 #include "core/network/gb_face.hpp"
+#include "core/network/gb_face_interior.hpp"
 #include "core/network/gregory_face.hpp"
 #include "core/network/tangent_planes.hpp"
 

@@ -9,6 +9,7 @@
 
 #include "core/eval/scene_evaluation.hpp"
 #include "core/io/scene_io.hpp"
+#include "core/network/face_ribbons.hpp"
 #include "core/network/gb_face_interior.hpp"
 #include "network_test_util.hpp"
 
@@ -125,6 +126,62 @@ TEST(GBFaceInteriorDrag, DegreeChangesAndFirstOffsetsRefill) {
   net.faces[0].degree = 6;  // the centre offset is still valid
   st = ev.sync(s);
   EXPECT_EQ(st.changed_surfaces, std::vector<int>{0});
+  EXPECT_LT(largest_difference(ev, SceneEvaluation(s, 12, std::nullopt), size), 1e-12);
+}
+
+// With compact samples (positions and geometry only) an interior edit re-evaluates the face's
+// patch as moved, and agrees with a fresh evaluation.
+TEST(GBFaceInteriorDrag, CompactStorageFollowsInteriorEdits) {
+  Scene s = load("gb-hole-filling.json");
+  s.network->faces[0].degree = 6;
+  SceneEvaluation ev(s, 12, std::nullopt, "t", SampleStorage::Compact);
+  s.network->faces[0].offsets.push_back({.side = 3, .j = 3, .layer = 2, .by = {0, 0.1, 0.2}});
+  const SyncStats st = ev.sync(s);
+  EXPECT_EQ(st.rebuilt_surfaces, 0u);
+  EXPECT_EQ(st.changed_surfaces, std::vector<int>{0});
+  const SceneEvaluation fresh(s, 12, std::nullopt, "t", SampleStorage::Compact);
+  const PatchEvaluator &a = *ev.surfaces().surfaces[0].evaluator,
+                       &b = *fresh.surfaces().surfaces[0].evaluator;
+  ASSERT_EQ(a.sample_count(), b.sample_count());
+  double worst = 0;
+  for (std::size_t i = 0; i < a.sample_count(); ++i)
+    worst = std::max({worst, glm::length(a.position(i) - b.position(i)),
+                      glm::length(a.geometry()[i].normal - b.geometry()[i].normal)});
+  EXPECT_LT(worst, 1e-12);
+}
+
+// A vertex move after interior edits, through the engine: the face follows its new patch point
+// by point, every free point of the followed patch is its new default plus its offset, and the
+// samples are a fresh evaluation's.
+TEST(GBFaceInteriorDrag, AVertexMoveAfterInteriorEditsCarriesTheOffsets) {
+  Scene s = load("gb-hole-filling.json");
+  Network& net = *s.network;
+  net.faces[0].degree = 6;
+  const double size = test::network_size(net);
+  SceneEvaluation ev(s, 12, std::nullopt);
+  net.faces[0].offsets = {{.centre = true, .by = {0, 0, 0.2}},
+                          {.side = 4, .j = 2, .layer = 2, .by = {0.05, 0, 0.1}}};
+  ev.sync(s);
+  const int v = net.faces[0].loop[2];
+  const Vec3 d(-0.05, 0.08, 0.1);
+  net.vertices[v] += d;
+  for (NetworkEdge& e : net.edges)
+    for (int k = 0; k < 2; ++k)
+      if (e.v[k] == v) e.handles[k] += d;
+  ev.sync(s);
+  const auto& patch =
+      dynamic_cast<const GBInteriorPatch&>(ev.surfaces().surfaces[0].evaluator->patch());
+  std::vector<ProjectedVertex> projected;
+  const auto ribbons = build_face_ribbons(net, ev.filling().topology(), projected);
+  const std::vector<Vec3> defaults = gb_face_default_net(ribbons[0], 6);
+  double worst = 0;
+  for (std::size_t k : patch.free_points()) {
+    Vec3 by(0);
+    for (const InteriorOffset& o : net.faces[0].offsets)
+      if (interior_point_index(5, 6, o) == k) by = o.by;
+    worst = std::max(worst, glm::length(patch.control_point(k) - (defaults[k] + by)) / size);
+  }
+  EXPECT_LT(worst, 1e-12);
   EXPECT_LT(largest_difference(ev, SceneEvaluation(s, 12, std::nullopt), size), 1e-12);
 }
 
