@@ -9,6 +9,7 @@
 #include "app/editor/logic/difference_field.hpp"
 #include "app/editor/logic/interior_actions.hpp"
 #include "app/editor/logic/live_surfaces.hpp"
+#include "app/editor/logic/net_thinning.hpp"
 #include "command_test_util.hpp"
 #include "core/network/gb_face_free_points.hpp"
 
@@ -185,6 +186,25 @@ TEST(EditorInterior, TheComparisonsDistanceFollowsAnInteriorEdit) {
   gb.sync(doc.scene(), doc.revision());
   EXPECT_TRUE(field.follow(gregory.draw(), gb.draw(), doc.revision()));
   EXPECT_NEAR(field.max_abs(), before, 1e-12);
+}
+
+TEST(EditorInterior, FreePointsAreThinnedWithTheirFaceAndShownWhenFocused) {
+  const Scene s = asset("gb-interior.json");
+  const LiveSurfaces live(s, 6, std::nullopt, "test");
+  const ScenePoints& pts = live.points();
+  // Every surface a few pixels wide: the faces' nets are hidden, free points with them.
+  NetScreenSizes tiny;
+  tiny.edge_pixels.assign(s.network->edges.size(), 4.0);
+  tiny.surface_pixels.assign(live.surfaces().surfaces.size(), 8.0);
+  const NetThinning hidden = thin_control_net(pts, live.surfaces(), &*s.network, tiny, {}, 8);
+  EXPECT_EQ(hidden.hidden_free, 7u);  // the pentagon's six and the hexagon's centre
+  EXPECT_NE(hidden.note().find("7 free points"), std::string::npos) << hidden.note();
+  // A selected free point keeps its face's net, free points included.
+  const PointRef c = PointRef::free_point(0, {.centre = true});
+  const NetThinning focused =
+      thin_control_net(pts, live.surfaces(), &*s.network, tiny, net_focus({c}, {}, {}, {}), 8);
+  EXPECT_EQ(focused.hidden_free, 1u);  // the hexagon's
+  for (const auto& [ref, at] : listed(pts, 0)) EXPECT_FALSE(focused.hidden[pts.find(ref)]);
 }
 
 }  // namespace

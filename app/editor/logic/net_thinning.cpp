@@ -175,7 +175,10 @@ NetThinning thin_control_net(const ScenePoints& pts, const SceneSurfaces& surfac
       case PointOwner::Kind::Patch:
       case PointOwner::Kind::Face:
         show = point_group[i] < 0 || group_on[point_group[i]];
-        if (!show) ++(o.kind == PointOwner::Kind::Face ? t.hidden_derived : t.hidden_patch);
+        if (!show)
+          ++(o.kind == PointOwner::Kind::Patch                ? t.hidden_patch
+             : pts.kinds[i] == ControlPointKind::FreeInterior ? t.hidden_free
+                                                              : t.hidden_derived);
         break;
       case PointOwner::Kind::Curve:  // few, and the only handle on a curve: always shown
         break;
@@ -199,6 +202,7 @@ std::string NetThinning::note() const {
   add(hidden_handles, "handles");
   add(hidden_derived, "derived points");
   add(hidden_patch, "patch points");
+  add(hidden_free, "free points");
   return "net: " + what + " hidden (too close on screen; zoom in or select)";
 }
 

@@ -38,7 +38,8 @@ struct NetFocus {
 
 struct NetThinning {
   std::vector<uint8_t> hidden;  // per point of the ScenePoints; empty when every point is shown
-  std::size_t hidden_vertices = 0, hidden_handles = 0, hidden_derived = 0, hidden_patch = 0;
+  std::size_t hidden_vertices = 0, hidden_handles = 0, hidden_derived = 0, hidden_patch = 0,
+              hidden_free = 0;  // free interior points of GB faces
   // For the status bar: what is hidden and why; empty when nothing is.
   std::string note() const;
 };
