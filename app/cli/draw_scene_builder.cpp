@@ -115,8 +115,7 @@ void append_free_curve(DrawScene& d, const SceneCurve& c, int comb_teeth) {
   // The control polygon; a Hermite curve's tangents as arrows to its equivalent Bézier handles.
   uint32_t previous = 0;
   for (std::size_t i = 0; i < c.points.size(); ++i) {
-    const uint32_t id =
-        add_point(d.net, c.points[i], ControlPointKind::Boundary, PointRole::Editable);
+    const uint32_t id = add_point(d.net, c.points[i], ControlPointKind::Curve, PointRole::Editable);
     if (i > 0 && c.type != CurveType::Hermite) d.net.segments.push_back({previous, id});
     previous = id;
   }

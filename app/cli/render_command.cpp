@@ -154,7 +154,7 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
   }
   request.key_entries = key;
   const double aspect = panel_aspect(request);
-  request.camera = !view    ? default_camera(scenes, aspect)
+  request.camera = !view    ? default_camera(scenes, aspect, &settings)
                    : preset ? preset_camera(*preset, box, aspect)
                             : read_camera_file(*view, box, aspect);
 

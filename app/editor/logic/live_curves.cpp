@@ -63,6 +63,9 @@ bool LiveCurves::follow(const Scene& scene, const SceneSurfaces& surfaces, uint6
     return pl::surface_borders(s, teeth);
   };
   if (!stale_ && revision_ == to) return false;  // e.g. the fine view catching up after a drag
+  last_free_resampled_ = 0;
+  if (stale_) combed_curves_.clear();
+  follow_free_curves(scene.curves);
   if (stale_ || revision_ != from || borders_.size() != n) {
     borders_.clear();
     on_network_.clear();
@@ -80,6 +83,46 @@ bool LiveCurves::follow(const Scene& scene, const SceneSurfaces& surfaces, uint6
   revision_ = to;
   ++serial_;
   return true;
+}
+
+namespace {
+
+bool same_curve(const SceneCurve& a, const SceneCurve& b) {
+  return a.type == b.type && a.degree == b.degree && a.points == b.points && a.knots == b.knots &&
+         a.weights == b.weights && a.tangents == b.tangents;
+}
+
+}  // namespace
+
+bool LiveCurves::follow_free_curves(const std::vector<SceneCurve>& curves) {
+  if (!combs_) {
+    const bool had = !free_combs_.empty();
+    free_combs_.clear();
+    combed_curves_.clear();
+    return had;
+  }
+  // By index: an inserted or removed curve resamples the curves after it (a rare edit).
+  if (combed_curves_.size() != curves.size()) {
+    combed_curves_.resize(curves.size());
+    free_combs_.resize(curves.size());
+    for (std::size_t c = 0; c < curves.size(); ++c) combed_curves_[c].points.clear();
+  }
+  bool changed = false;
+  for (std::size_t c = 0; c < curves.size(); ++c) {
+    if (!combed_curves_[c].points.empty() && same_curve(curves[c], combed_curves_[c])) continue;
+    combed_curves_[c] = curves[c];
+    free_combs_[c] = pl::free_curve_combs(curves[c], teeth_);
+    ++last_free_resampled_;
+    changed = true;
+  }
+  return changed;
+}
+
+std::vector<const CurvatureComb*> LiveCurves::free_comb_refs() const {
+  std::vector<const CurvatureComb*> refs;
+  for (const auto& curve : free_combs_)
+    for (const CurvatureComb& c : curve) refs.push_back(&c);
+  return refs;
 }
 
 std::vector<const CurvatureComb*> LiveCurves::network_comb_refs() const {
