@@ -129,11 +129,12 @@ void draw_curve_joints(const SidePanel& p) {
   const float h = ImGui::GetTextLineHeightWithSpacing() * (rows + 1.6f);
   if (!ImGui::BeginTable("curve_joints", 5, flags, ImVec2(0, h))) return;
   ImGui::TableSetupScrollFreeze(0, 1);
-  ImGui::TableSetupColumn("joint");
-  ImGui::TableSetupColumn("G");
-  ImGui::TableSetupColumn("G0 gap");
-  ImGui::TableSetupColumn("G1 deg");
-  ImGui::TableSetupColumn("k jump");
+  // The ends' names need the room; the figures are short.
+  ImGui::TableSetupColumn("joint", ImGuiTableColumnFlags_WidthStretch, 3.0f);
+  ImGui::TableSetupColumn("G", ImGuiTableColumnFlags_WidthStretch, 0.45f);
+  ImGui::TableSetupColumn("G0 gap", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+  ImGui::TableSetupColumn("G1 deg", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+  ImGui::TableSetupColumn("k jump", ImGuiTableColumnFlags_WidthStretch, 1.0f);
   ImGui::TableHeadersRow();
   for (std::size_t i = 0; i < marks.joints().size(); ++i) {
     const JointReport& j = marks.joints()[i];
@@ -148,7 +149,7 @@ void draw_curve_joints(const SidePanel& p) {
     ImGui::TableNextColumn();
     ImGui::TextUnformatted(joint_class(j, marks.size()).c_str());
     ImGui::TableNextColumn();
-    ImGui::Text("%.2e", j.gap);
+    ImGui::Text("%.1e", j.gap);
     ImGui::TableNextColumn();
     ImGui::Text("%.3g", j.tangent_angle_deg);
     ImGui::TableNextColumn();

@@ -3,6 +3,8 @@
 // and figures. The geometry is CurveMarks' (GUI-free); this only projects and draws it.
 #include <imgui.h>
 
+#include <set>
+
 #include "app/editor/viewport_overlays.hpp"
 #include "render/palette.hpp"
 
@@ -37,8 +39,13 @@ void draw_curve_marks(const OverlayFrame& o) {
   const WindowProjector project(o.camera, o.rect);
   const float s = o.ui_scale;
   const ImU32 ink = rgba(palette::kInk), halo = rgba(palette::kPanel, 0.85f);
-  for (const auto& curve : marks.ticks())
-    for (const KnotTick& k : curve) {
+  // Curve ends at a joint get the joint's ring instead of their ticks.
+  std::set<std::pair<int, bool>> joined;
+  for (const JointReport& j : marks.joints())
+    for (int k = 0; k < 2; ++k) joined.emplace(j.curves[k], j.at_start[k]);
+  for (std::size_t c = 0; c < marks.ticks().size(); ++c)
+    for (const KnotTick& k : marks.ticks()[c]) {
+      if (k.end && joined.count({int(c), k.t == marks.ticks()[c].front().t})) continue;
       const auto t = tick_on_screen(project, k, tick_length_px(k, 11.0 * s));
       if (!t) continue;
       const float w = (k.end ? 2.4f : 1.6f) * s;

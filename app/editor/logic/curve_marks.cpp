@@ -42,7 +42,7 @@ std::vector<KnotTick> knot_ticks(const SceneCurve& curve) {
 }
 
 double tick_length_px(const KnotTick& tick, double base_px) {
-  if (tick.end) return 1.5 * base_px;
+  if (tick.end) return 2.4 * base_px;  // across the end point's symbol, standing out of it
   return base_px * (1.0 + 0.6 * (tick.multiplicity - 1));
 }
 
@@ -69,7 +69,8 @@ std::optional<ScreenTick> tick_on_screen(const WindowProjector& project, const K
 }
 
 std::string joint_class(const JointReport& joint, double size) {
-  return "G" + std::to_string(joint_continuity(joint, size));
+  static const char* const kClasses[] = {"G0", "G1", "G2"};
+  return kClasses[joint_continuity(joint, size)];
 }
 
 std::string joint_label(const JointReport& joint, double size) {

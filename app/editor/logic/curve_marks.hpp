@@ -27,7 +27,7 @@ struct KnotTick {
 // [t_min, t_max]; the polynomial types (one span) at their two ends.
 std::vector<KnotTick> knot_ticks(const SceneCurve& curve);
 
-// A tick's length on screen: the ends 1.5 base, an interior knot base (1 + 0.6 (m - 1)).
+// A tick's length on screen: the ends 2.4 base (out of the end point's symbol), an interior knot base (1 + 0.6 (m - 1)).
 double tick_length_px(const KnotTick& tick, double base_px);
 
 // The tick as a segment on screen, `length_px` long, centred on the curve and across its
