@@ -21,6 +21,7 @@
 //   curve-point C K X Y                          (control point K of free curve C)
 //   edge I X Y | edge I hidden                   (a pixel that picks the edge's curve)
 //   curve C X Y | curve C hidden                 (a pixel that picks free curve C by its line)
+//   joint A B G2 gap G angle D jump J            (a joint of free curves A and B: class, figures)
 //   face I X Y | face I hidden                   (a pixel that picks the face's surface)
 //   knob V X Y                                   (the normal knob of a selected vertex)
 //   state-end R
@@ -164,6 +165,11 @@ void Editor::report_state() {
         << pixel(find_pixel_for(pickers_[0], picks, camera, rects[0], SelectionItem::curve(int(c)),
                                 {d.control_net, d.network_curves}))
         << "\n";
+  // The joints as the view labels them (CurveMarks follows the document every frame).
+  for (const JointReport& j : curve_marks_.joints())
+    out << "joint " << j.curves[0] << " " << j.curves[1] << " "
+        << joint_class(j, curve_marks_.size()) << " gap " << j.gap << " angle "
+        << j.tangent_angle_deg << " jump " << j.curvature_jump << "\n";
   for (std::size_t f = 0; f < net.faces.size(); ++f)
     out << "face " << f << " "
         << pixel(find_pixel_for(pickers_[0], picks, camera, rects[0], SelectionItem::face(int(f)),

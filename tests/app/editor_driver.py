@@ -33,6 +33,7 @@ class State:
         self.revision = int(self.fields["revision"])
         self.vertices, self.edges, self.faces, self.knobs = {}, {}, {}, {}
         self.curves = {}  # free curve -> a pixel on its line that picks it
+        self.joints = []  # (curve, curve, "G0" | "G1" | "G2", gap, angle in degrees, jump)
         self.curve_points = {}  # (curve, point) -> pixel
         for line in lines[1:]:
             w = line.split()
@@ -46,6 +47,9 @@ class State:
                 table = {"vertex": self.vertices, "edge": self.edges, "face": self.faces,
                          "knob": self.knobs, "curve": self.curves}[w[0]]
                 table[int(w[1])] = where
+            elif w[0] == "joint":
+                self.joints.append((int(w[1]), int(w[2]), w[3], float(w[5]), float(w[7]),
+                                    float(w[9])))
             elif w[0] == "curve-point":
                 self.curve_points[(int(w[1]), int(w[2]))] = (
                     None if w[3] == "hidden" else (float(w[3]), float(w[4])))
