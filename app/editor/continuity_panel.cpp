@@ -149,7 +149,7 @@ void draw_curve_joints(const SidePanel& p) {
     ImGui::TableNextColumn();
     ImGui::TextUnformatted(joint_class(j, marks.size()).c_str());
     ImGui::TableNextColumn();
-    ImGui::Text("%.1e", j.gap);
+    ImGui::Text("%.2g", j.gap);
     ImGui::TableNextColumn();
     ImGui::Text("%.3g", j.tangent_angle_deg);
     ImGui::TableNextColumn();
