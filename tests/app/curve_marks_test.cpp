@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "app/cli/load_input.hpp"
@@ -135,6 +136,23 @@ TEST(CurveMarks, AnEditOfOneCurveRecomputesThatCurveOnly) {
   ASSERT_EQ(marks.joints().size(), 1u);
   EXPECT_EQ(marks.joints()[0].curves, (std::array<int, 2>{1, 2}));
   EXPECT_EQ(marks.joints()[0].at_start, (std::array<bool, 2>{false, true}));
+  // A moved point of a long spline evaluates only the knots of its support (p + 2 of them).
+  std::vector<SceneCurve> one(1);
+  one[0].type = CurveType::BSpline;
+  one[0].degree = 3;
+  for (int i = 0; i < 1000; ++i) one[0].points.push_back({0.01 * i, std::sin(0.05 * i), 0});
+  for (int i = 0; i < 1004; ++i) one[0].knots.push_back(std::clamp(i - 3, 0, 997));
+  marks.follow(one);
+  EXPECT_EQ(marks.last_ticks_evaluated(), 998u);
+  one[0].points[500].z = 0.2;
+  marks.follow(one);
+  EXPECT_EQ(marks.last_ticks_evaluated(), 5u);  // knots 497 .. 501
+  const std::vector<KnotTick> fresh = knot_ticks(one[0]);
+  ASSERT_EQ(marks.ticks()[0].size(), fresh.size());
+  for (std::size_t k = 0; k < fresh.size(); ++k) {
+    EXPECT_EQ(marks.ticks()[0][k].point, fresh[k].point) << k;
+    EXPECT_EQ(marks.ticks()[0][k].tangent, fresh[k].tangent) << k;
+  }
   curves.clear();
   EXPECT_TRUE(marks.follow(curves));
   EXPECT_TRUE(marks.joints().empty() && marks.ticks().empty());

@@ -1,5 +1,6 @@
 #include "app/editor/logic/curve_marks.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -12,9 +13,16 @@ KnotTick tick_at(const SceneCurve& curve, double t, int multiplicity, bool end) 
   return {t, multiplicity, end, p.p, p.d1};
 }
 
-bool same_curve(const SceneCurve& a, const SceneCurve& b) {
-  return a.type == b.type && a.degree == b.degree && a.points == b.points && a.knots == b.knots &&
-         a.weights == b.weights && a.tangents == b.tangents && a.name == b.name;
+// Equal but for (some of) the points' positions: a drag or a nudge.
+bool same_shape(const SceneCurve& a, const SceneCurve& b) {
+  return a.type == b.type && a.degree == b.degree && a.knots == b.knots && a.weights == b.weights &&
+         a.tangents == b.tangents && a.name == b.name && a.points.size() == b.points.size();
+}
+
+// The parameter range point k of `c` moves: [t_k, t_{k+p+1}] of a spline, everything else.
+std::pair<double, double> support(const SceneCurve& c, std::size_t k) {
+  if (c.type != CurveType::BSpline && c.type != CurveType::Nurbs) return {c.t_min(), c.t_max()};
+  return {c.knots[k], c.knots[k + c.degree + 1]};
 }
 
 }  // namespace
@@ -93,23 +101,46 @@ std::string joint_ends(const JointReport& joint, const std::vector<SceneCurve>& 
 }
 
 bool CurveMarks::follow(const std::vector<SceneCurve>& curves) {
-  last_recomputed_ = 0;
-  if (seen_.size() != curves.size()) {
+  last_recomputed_ = last_ticks_evaluated_ = 0;
+  bool changed = false;
+  if (seen_.size() != curves.size()) {  // curves added or removed: all of them again
     seen_.assign(curves.size(), SceneCurve{});
     ticks_.assign(curves.size(), {});
+    changed = true;
   }
-  bool changed = false;
   for (std::size_t c = 0; c < curves.size(); ++c) {
-    if (!seen_[c].points.empty() && same_curve(seen_[c], curves[c])) continue;
-    seen_[c] = curves[c];
-    ticks_[c] = knot_ticks(curves[c]);
+    const SceneCurve& curve = curves[c];
+    SceneCurve& seen = seen_[c];
+    if (!seen.points.empty() && same_shape(seen, curve)) {
+      // Only points moved: the ticks on their supports move, the others stay (a drag of one
+      // point of a long spline costs its p + 2 knots, not the curve's).
+      if (seen.points == curve.points) continue;
+      double lo = curve.t_max(), hi = curve.t_min();
+      for (std::size_t k = 0; k < curve.points.size(); ++k)
+        if (seen.points[k] != curve.points[k]) {
+          const auto [a, b] = support(curve, k);
+          lo = std::min(lo, a), hi = std::max(hi, b);
+        }
+      seen.points = curve.points;
+      for (KnotTick& t : ticks_[c])
+        if (t.t >= lo && t.t <= hi) {
+          const CurvePoint p = evaluate(curve, t.t);
+          t.point = p.p, t.tangent = p.d1;
+          ++last_ticks_evaluated_;
+        }
+      ++last_recomputed_;
+      changed = true;
+      continue;
+    }
+    seen = curve;
+    ticks_[c] = knot_ticks(curve);
+    last_ticks_evaluated_ += ticks_[c].size();
     ++last_recomputed_;
     changed = true;
   }
-  if (changed || (curves.empty() && !joints_.empty())) {
+  if (changed) {
     joints_ = curve_joints(curves);
     size_ = curves_size(curves);
-    changed = true;
   }
   return changed;
 }

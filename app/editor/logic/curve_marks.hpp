@@ -3,7 +3,8 @@
 // a multiple interior knot gets a longer tick and its multiplicity as a label), and the joints of
 // concatenated curves (an end on another curve's start or end) with their G0/G1/G2 figures, from
 // the core's joint analysis, the one `patchlab analyze` reports. Kept per curve: an edit of one
-// curve (a drag) recomputes that curve's ticks only. GUI-free and unit-tested.
+// curve recomputes that curve's ticks only, and a moved point only the ticks on its support.
+// GUI-free and unit-tested.
 #pragma once
 
 #include <optional>
@@ -27,7 +28,8 @@ struct KnotTick {
 // [t_min, t_max]; the polynomial types (one span) at their two ends.
 std::vector<KnotTick> knot_ticks(const SceneCurve& curve);
 
-// A tick's length on screen: the ends 2.4 base (out of the end point's symbol), an interior knot base (1 + 0.6 (m - 1)).
+// A tick's length on screen: the ends 2.4 base (out of the end point's symbol), an interior knot
+// base (1 + 0.6 (m - 1)).
 double tick_length_px(const KnotTick& tick, double base_px);
 
 // The tick as a segment on screen, `length_px` long, centred on the curve and across its
@@ -55,15 +57,16 @@ class CurveMarks {
   const std::vector<std::vector<KnotTick>>& ticks() const { return ticks_; }
   const std::vector<JointReport>& joints() const { return joints_; }
   double size() const { return size_; }  // the curves' size (curves_size)
-  // Curves whose ticks the last follow() recomputed (for tests).
+  // Curves whose ticks the last follow() recomputed, and the ticks it evaluated (for tests).
   std::size_t last_recomputed() const { return last_recomputed_; }
+  std::size_t last_ticks_evaluated() const { return last_ticks_evaluated_; }
 
  private:
   std::vector<SceneCurve> seen_;
   std::vector<std::vector<KnotTick>> ticks_;
   std::vector<JointReport> joints_;
   double size_ = 0;
-  std::size_t last_recomputed_ = 0;
+  std::size_t last_recomputed_ = 0, last_ticks_evaluated_ = 0;
 };
 
 }  // namespace pl
