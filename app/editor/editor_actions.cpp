@@ -18,7 +18,8 @@ namespace {
 
 constexpr ContextSet kOnObjects =
     context_bit(ContextTarget::Point) | context_bit(ContextTarget::Edge) |
-    context_bit(ContextTarget::Face) | context_bit(ContextTarget::Patch);
+    context_bit(ContextTarget::Face) | context_bit(ContextTarget::Patch) |
+    context_bit(ContextTarget::Curve);
 
 }  // namespace
 

@@ -5,7 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "app/document/curve_commands.hpp"
+#include "app/editor/logic/selection_actions.hpp"
 #include "app/editor/logic/selection_properties.hpp"
 #include "curve_test_util.hpp"
 
@@ -98,8 +101,17 @@ TEST(CurveActions, ActOnACurveSelectedByItsLine) {
   ASSERT_TRUE(r.run("curve.elevate"));
   EXPECT_EQ(curve_degree(doc.scene().curves[1]), 6);
   EXPECT_EQ(curve_degree(doc.scene().curves[0]), 3);
-  // Its points are the selection's points for framing and the like.
+  // Its points are the selection's points for framing and the like, and Points of Selection
+  // (offered on the curve's right-click menu) selects them.
   EXPECT_EQ(points_of(doc.scene(), selection).size(), doc.scene().curves[1].points.size());
+  add_selection_actions(r, doc, selection, hooks.say);
+  const std::vector<const Action*> on_curve = r.for_context(ContextTarget::Curve);
+  EXPECT_NE(std::find_if(on_curve.begin(), on_curve.end(),
+                         [](const Action* a) { return a->id == "select.points_of"; }),
+            on_curve.end());
+  ASSERT_TRUE(r.run("select.points_of"));
+  ASSERT_EQ(selection.size(), doc.scene().curves[1].points.size());
+  EXPECT_EQ(selection.items()[0], SelectionItem::of_point(PointRef::curve_point(1, 0)));
 }
 
 }  // namespace
