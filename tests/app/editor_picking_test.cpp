@@ -222,6 +222,10 @@ TEST(EditorPicking, AFreeCurveIsPickedByItsLine) {
     ++picked;
   }
   EXPECT_EQ(picked, s.curves.size());  // no curve skipped for a point near its middle
+  // Curve points are of their own kind (drawn and named as curve points, not boundary ones).
+  const int first = live.points().find(PointRef::curve_point(0, 0));
+  ASSERT_GE(first, 0);
+  EXPECT_EQ(live.points().kinds[first], ControlPointKind::Curve);
   // On a control point the point wins.
   const Vec2 p0 = *project_to_window(c, kRect, s.curves[0].points[0]);
   const PickResult r = picker.pick(scene, c, kRect, p0);
