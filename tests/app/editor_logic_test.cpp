@@ -261,9 +261,36 @@ TEST(EditorLiveCurves, FreeCurvesHaveCombsAndAnEditResamplesItsCurveOnly) {
   for (std::size_t k = 0; k < moved.size(); ++k)
     EXPECT_EQ(curves.free_curve_combs()[1][k].teeth, moved[k].teeth);
 
+  // A point of a long B-spline: the comb is resampled on the p + 1 spans the point moves only,
+  // and equals the whole curve's comb sampled afresh.
+  SceneCurve long_curve;
+  long_curve.type = CurveType::BSpline;
+  long_curve.degree = 3;
+  for (int i = 0; i < 1000; ++i) long_curve.points.push_back({0.01 * i, std::sin(0.05 * i), 0});
+  for (int i = 0; i < 1004; ++i) long_curve.knots.push_back(std::clamp(i - 3, 0, 997));
+  s.curves.push_back(long_curve);
+  live.sync(s, 2);
+  curves.follow(s, live.surfaces(), 1, 2, {});
+  std::size_t all_spans = 0;  // a curve added: every curve resampled
+  for (const SceneCurve& c : s.curves) all_spans += curve_spans(c).size();
+  EXPECT_EQ(all_spans, total + 997);
+  EXPECT_EQ(curves.last_free_spans_resampled(), all_spans);
+  set_point_position(s, PointRef::curve_point(int(s.curves.size()) - 1, 500),
+                     s.curves.back().points[500] + Vec3(0, 0.2, 0.1));
+  live.sync(s, 3);
+  curves.follow(s, live.surfaces(), 2, 3, {});
+  EXPECT_EQ(curves.last_free_curves_resampled(), 1u);
+  EXPECT_EQ(curves.last_free_spans_resampled(), 4u);
+  const std::vector<CurvatureComb> fresh = free_curve_combs(s.curves.back(), 12);
+  ASSERT_EQ(curves.free_curve_combs().back().size(), fresh.size());
+  for (std::size_t k = 0; k < fresh.size(); ++k) {
+    EXPECT_EQ(curves.free_curve_combs().back()[k].points, fresh[k].points) << k;
+    EXPECT_EQ(curves.free_curve_combs().back()[k].teeth, fresh[k].teeth) << k;
+  }
+
   // Combs off again: none kept.
   curves.configure(false, 12);
-  curves.follow(s, live.surfaces(), 1, 1, {});
+  curves.follow(s, live.surfaces(), 3, 3, {});
   EXPECT_TRUE(curves.free_curve_combs().empty());
 }
 

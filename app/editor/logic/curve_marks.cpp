@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "app/editor/logic/curve_edits.hpp"
+
 namespace pl {
 
 namespace {
@@ -11,18 +13,6 @@ namespace {
 KnotTick tick_at(const SceneCurve& curve, double t, int multiplicity, bool end) {
   const CurvePoint p = evaluate(curve, t);
   return {t, multiplicity, end, p.p, p.d1};
-}
-
-// Equal but for (some of) the points' positions: a drag or a nudge.
-bool same_shape(const SceneCurve& a, const SceneCurve& b) {
-  return a.type == b.type && a.degree == b.degree && a.knots == b.knots && a.weights == b.weights &&
-         a.tangents == b.tangents && a.name == b.name && a.points.size() == b.points.size();
-}
-
-// The parameter range point k of `c` moves: [t_k, t_{k+p+1}] of a spline, everything else.
-std::pair<double, double> support(const SceneCurve& c, std::size_t k) {
-  if (c.type != CurveType::BSpline && c.type != CurveType::Nurbs) return {c.t_min(), c.t_max()};
-  return {c.knots[k], c.knots[k + c.degree + 1]};
 }
 
 }  // namespace
@@ -111,16 +101,12 @@ bool CurveMarks::follow(const std::vector<SceneCurve>& curves) {
   for (std::size_t c = 0; c < curves.size(); ++c) {
     const SceneCurve& curve = curves[c];
     SceneCurve& seen = seen_[c];
-    if (!seen.points.empty() && same_shape(seen, curve)) {
+    if (!seen.points.empty() && same_but_points(seen, curve)) {
       // Only points moved: the ticks on their supports move, the others stay (a drag of one
       // point of a long spline costs its p + 2 knots, not the curve's).
-      if (seen.points == curve.points) continue;
-      double lo = curve.t_max(), hi = curve.t_min();
-      for (std::size_t k = 0; k < curve.points.size(); ++k)
-        if (seen.points[k] != curve.points[k]) {
-          const auto [a, b] = support(curve, k);
-          lo = std::min(lo, a), hi = std::max(hi, b);
-        }
+      const auto range = moved_range(seen, curve);
+      if (!range) continue;
+      const auto [lo, hi] = *range;
       seen.points = curve.points;
       for (KnotTick& t : ticks_[c])
         if (t.t >= lo && t.t <= hi) {

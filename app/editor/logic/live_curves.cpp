@@ -5,6 +5,7 @@
 #include <string>
 
 #include "app/cli/draw_scene_builder.hpp"
+#include "app/editor/logic/curve_edits.hpp"
 
 namespace pl {
 
@@ -63,7 +64,7 @@ bool LiveCurves::follow(const Scene& scene, const SceneSurfaces& surfaces, uint6
     return pl::surface_borders(s, teeth);
   };
   if (!stale_ && revision_ == to) return false;  // e.g. the fine view catching up after a drag
-  last_free_resampled_ = 0;
+  last_free_resampled_ = last_free_spans_resampled_ = 0;
   if (stale_) combed_curves_.clear();
   follow_free_curves(scene.curves);
   if (stale_ || revision_ != from || borders_.size() != n) {
@@ -85,15 +86,6 @@ bool LiveCurves::follow(const Scene& scene, const SceneSurfaces& surfaces, uint6
   return true;
 }
 
-namespace {
-
-bool same_curve(const SceneCurve& a, const SceneCurve& b) {
-  return a.type == b.type && a.degree == b.degree && a.points == b.points && a.knots == b.knots &&
-         a.weights == b.weights && a.tangents == b.tangents;
-}
-
-}  // namespace
-
 bool LiveCurves::follow_free_curves(const std::vector<SceneCurve>& curves) {
   if (!combs_) {
     const bool had = !free_combs_.empty();
@@ -109,9 +101,27 @@ bool LiveCurves::follow_free_curves(const std::vector<SceneCurve>& curves) {
   }
   bool changed = false;
   for (std::size_t c = 0; c < curves.size(); ++c) {
-    if (!combed_curves_[c].points.empty() && same_curve(curves[c], combed_curves_[c])) continue;
-    combed_curves_[c] = curves[c];
-    free_combs_[c] = pl::free_curve_combs(curves[c], teeth_);
+    const SceneCurve& curve = curves[c];
+    SceneCurve& combed = combed_curves_[c];
+    if (!combed.points.empty() && same_but_points(combed, curve)) {
+      // Only points moved: the combs of the spans they touch (p + 1 of a spline's), not the
+      // curve's (a drag on a 1,000-point B-spline resamples 4 spans, not 997).
+      const auto range = moved_range(combed, curve);
+      if (!range) continue;
+      combed.points = curve.points;
+      const auto spans = curve_spans(curve);
+      for (std::size_t k = 0; k < spans.size() && k < free_combs_[c].size(); ++k)
+        if (spans[k].first < range->second && spans[k].second > range->first) {
+          free_combs_[c][k] = free_curve_span_comb(curve, spans[k], teeth_);
+          ++last_free_spans_resampled_;
+        }
+      ++last_free_resampled_;
+      changed = true;
+      continue;
+    }
+    combed = curve;
+    free_combs_[c] = pl::free_curve_combs(curve, teeth_);
+    last_free_spans_resampled_ += free_combs_[c].size();
     ++last_free_resampled_;
     changed = true;
   }

@@ -41,10 +41,12 @@ class LiveCurves {
   // Per network edge (empty without combs).
   const std::vector<CurvatureComb>& network_combs() const { return network_combs_; }
   // Per free curve of the scene, one comb per span (empty without combs). Only the curves that
-  // changed since the last follow() are resampled (a drag on one curve leaves the others).
+  // changed since the last follow() are resampled (a drag on one curve leaves the others), and
+  // of a curve whose points only moved, the spans those points touch.
   const std::vector<std::vector<CurvatureComb>>& free_curve_combs() const { return free_combs_; }
-  // Free curves resampled by the last follow() (for tests).
+  // Free curves, and spans of them, resampled by the last follow() (for tests).
   std::size_t last_free_curves_resampled() const { return last_free_resampled_; }
+  std::size_t last_free_spans_resampled() const { return last_free_spans_resampled_; }
   // Per surface, per domain side: the border's points and, with combs, its teeth.
   const std::vector<std::vector<CurvatureComb>>& borders() const { return borders_; }
   // Per surface: a network face (its border combs are its edges').
@@ -64,7 +66,7 @@ class LiveCurves {
   std::vector<CurvatureComb> network_combs_;
   std::vector<SceneCurve> combed_curves_;  // the free curves as free_combs_ were made from
   std::vector<std::vector<CurvatureComb>> free_combs_;
-  std::size_t last_free_resampled_ = 0;
+  std::size_t last_free_resampled_ = 0, last_free_spans_resampled_ = 0;
   bool follow_free_curves(const std::vector<SceneCurve>& curves);
   std::vector<std::vector<CurvatureComb>> borders_;
   std::vector<bool> on_network_;
