@@ -3,6 +3,7 @@
 // and figures. The geometry is CurveMarks' (GUI-free); this only projects and draws it.
 #include <imgui.h>
 
+#include <optional>
 #include <set>
 
 #include "app/editor/viewport_overlays.hpp"
@@ -43,11 +44,17 @@ void draw_curve_marks(const OverlayFrame& o) {
   std::set<std::pair<int, bool>> joined;
   for (const JointReport& j : marks.joints())
     for (int k = 0; k < 2; ++k) joined.emplace(j.curves[k], j.at_start[k]);
-  for (std::size_t c = 0; c < marks.ticks().size(); ++c)
+  for (std::size_t c = 0; c < marks.ticks().size(); ++c) {
+    std::optional<Vec2> last;  // the last tick drawn on this curve
     for (const KnotTick& k : marks.ticks()[c]) {
       if (k.end && joined.count({int(c), k.t == marks.ticks()[c].front().t})) continue;
       const auto t = tick_on_screen(project, k, tick_length_px(k, 11.0 * s));
       if (!t) continue;
+      // A long spline seen small: simple knots closer than a few pixels to the last tick are
+      // left out (a solid band of ticks says nothing); ends and multiple knots always show.
+      if (!k.end && k.multiplicity == 1 && last && glm::length(t->centre - *last) < 5.0 * s)
+        continue;
+      last = t->centre;
       const float w = (k.end ? 2.4f : 1.6f) * s;
       dl->AddLine(im(t->a), im(t->b), halo, w + 2.0f * s);
       dl->AddLine(im(t->a), im(t->b), ink, w);
@@ -64,6 +71,7 @@ void draw_curve_marks(const OverlayFrame& o) {
         dl->AddText(corner, ink, label.c_str());
       }
     }
+  }
   // Joints: a ring on the joint and its label at the upper right.
   for (const JointReport& j : marks.joints()) {
     const auto p = project(j.position);
