@@ -9,13 +9,14 @@
 
 namespace pl::palette {
 
-// Point kinds, in the core's ControlPointKind order (Boundary, Inner, Twin, Central). Editable
-// points are filled with these, derived ones drawn as rings of them.
-inline constexpr std::array<Rgb, 4> kPointKinds{{
+// Point kinds, in the core's ControlPointKind order (Boundary, Inner, Twin, Central, Curve).
+// Editable points are filled with these, derived ones drawn as rings of them.
+inline constexpr std::array<Rgb, 5> kPointKinds{{
     {0.93f, 0.47f, 0.08f},  // boundary: orange square
     {0.16f, 0.45f, 0.90f},  // inner: blue disc
     {0.78f, 0.22f, 0.78f},  // twin: magenta diamond
     {0.13f, 0.62f, 0.30f},  // central: green triangle
+    {0.74f, 0.10f, 0.22f},  // curve (a free curve's point): crimson hexagon
 }};
 inline constexpr Rgb kPointOutline{0.08f, 0.08f, 0.09f};
 inline constexpr Rgb kDerivedPointFill{0.98f, 0.98f, 0.97f};

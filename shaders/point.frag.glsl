@@ -1,9 +1,9 @@
 #version 330 core
 // A control point: its shape says its kind (boundary square, inner disc, twin diamond, central
-// triangle), its fill whether it is editable (filled with the kind's colour, dark outline) or
+// triangle, curve hexagon), its fill whether it is editable (filled with the kind's colour, dark outline) or
 // derived (a ring of the kind's colour around a light centre). Shapes are signed distances in
 // pixels, antialiased over one pixel.
-uniform vec3 u_kind_colors[4];  // ControlPointKind order
+uniform vec3 u_kind_colors[8];  // ControlPointKind order (the kinds there are)
 uniform vec3 u_outline;
 uniform vec3 u_derived_fill;
 uniform float u_alpha;
@@ -27,13 +27,18 @@ float shape(int kind, vec2 p, float r) {
   }
   if (kind == 2) return (abs(p.x) + abs(p.y) - 1.2 * r) * 0.70710678;
   if (kind == 3) return triangle(p, 0.75 * r);
+  // Hexagon, two vertices on the vertical, inradius 0.93 r (about the square's area).
+  if (kind == 4) {
+    vec2 q = abs(p);
+    return max(dot(q, vec2(0.5, 0.8660254)), q.x) - 0.93 * r;
+  }
   return length(p) - r;
 }
 
 void main() {
   int tag = int(f_tag + 0.5);
-  int kind = clamp(tag % 4, 0, 3);
-  bool derived = tag >= 4;
+  int kind = clamp(tag % 8, 0, 7);  // kPointStyleKinds
+  bool derived = tag >= 8;
   float h = 0.8 * f_size + 1.0;
   vec2 p = f_uv * h;  // pixels from the centre
   float r = 0.5 * f_size;

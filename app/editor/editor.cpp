@@ -94,7 +94,8 @@ Box Editor::scene_box() const {
 PickScene Editor::pick_scene(int panel, std::vector<SelectionItem>& items) const {
   const LiveSurfaces& live = views_.panel(panel).shown();
   items = surface_items(live.surfaces());
-  return {live.draw().surfaces, items, live.draw().network_curves, &live.points()};
+  return {live.draw().surfaces, items, live.draw().network_curves, &live.points(),
+          live.draw().free_curves};
 }
 
 ToolContext Editor::tool_context() {
@@ -160,6 +161,7 @@ void Editor::follow_document() {
   // Continuity figures follow the fine surfaces only: analysing every drag step would cost
   // more than the drag itself.
   follow_continuity(continuity_, views_, doc);
+  curve_marks_.follow(doc.scene().curves);
 }
 
 NetFocus Editor::net_focus() const {
@@ -222,7 +224,7 @@ void Editor::draw_interface(const ColorRange& range) {
   const EditorLayout l = layout();
   ToolContext tools = tool_context();
   const SidePanel panel{prefs_,      views_, session_.doc(), selection_, actions_, continuity_,
-                        work_plane_, tools_, range,          ui_scale_,  &tools};
+                        work_plane_, tools_, range,          ui_scale_,  &tools,   &curve_marks_};
   if (draw_side_panel(panel, l.menu_height, l.status_height)) rebuild_views(views_.compare());
 
   StatusFigures figures;
@@ -301,6 +303,7 @@ void Editor::frame() {
   f.selection = &selection_;
   f.work_plane = &work_plane_;
   f.continuity = &continuity_;
+  f.curve_marks = &curve_marks_;
   f.viewport = l.viewport();
   f.panels = l.panels(views_.compare());
   f.hover_panel = mouse_.panel;

@@ -5,6 +5,7 @@
 
 #include "app/editor/logic/actions.hpp"
 #include "app/editor/logic/continuity_monitor.hpp"
+#include "app/editor/logic/curve_marks.hpp"
 #include "app/editor/logic/document_session.hpp"
 #include "app/editor/logic/preferences.hpp"
 #include "app/editor/logic/selection.hpp"
@@ -24,7 +25,8 @@ struct SidePanel {
   ToolBox& tools;
   ColorRange range;  // the colour range shown (a "fixed range" starts from it)
   float ui_scale = 1;
-  ToolContext* tool_context = nullptr;  // what the active tool's options act through
+  ToolContext* tool_context = nullptr;      // what the active tool's options act through
+  const CurveMarks* curve_marks = nullptr;  // the joints of the free curves (Continuity)
 };
 
 // Draws the panel at the right of the window, between the bars. Returns true when the
@@ -36,7 +38,7 @@ void draw_tools_section(const SidePanel& p);
 void draw_tool_options(const SidePanel& p);
 void draw_selection_section(const SidePanel& p);
 // The free curve `curve` of the selected curve point `point` (in the Selection section).
-void draw_curve_section(const SidePanel& p, int curve, int point);
+void draw_curve_section(const SidePanel& p, int curve, int point);  // point -1: the whole curve
 // Returns true when the densities changed.
 bool draw_display_section(const SidePanel& p);
 void draw_work_plane_section(const SidePanel& p);

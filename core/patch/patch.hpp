@@ -16,7 +16,9 @@
 namespace pl {
 
 // How a control point is drawn and what it means to the designer.
-enum class ControlPointKind { Boundary, Inner, Twin, Central };
+// Curve: a control point of a free curve of a scene (no patch has one; the renderer and the
+// editor draw and name curve points by it).
+enum class ControlPointKind { Boundary, Inner, Twin, Central, Curve };
 
 class Patch {
  public:

@@ -31,8 +31,8 @@ TEST(Palette, HighlightIsNoColourMapsAndNoOverlaysColour) {
         palette::kNetworkCurve, palette::kBorder, palette::kCombTeeth, palette::kCombEnvelope})
     EXPECT_GT(distance(palette::kHighlight, c), 0.6);
   // Point kinds tell apart from each other.
-  for (std::size_t i = 0; i < 4; ++i)
-    for (std::size_t j = i + 1; j < 4; ++j)
+  for (std::size_t i = 0; i < palette::kPointKinds.size(); ++i)
+    for (std::size_t j = i + 1; j < palette::kPointKinds.size(); ++j)
       EXPECT_GT(distance(palette::kPointKinds[i], palette::kPointKinds[j]), 0.35) << i << " " << j;
 }
 
