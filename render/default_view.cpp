@@ -93,7 +93,29 @@ Vec3 default_view_direction(std::span<const SurfaceMesh* const> meshes) {
   return direction_of(c);
 }
 
-std::vector<Vec3> framing_points(std::span<const DrawScene* const> scenes) {
+void append_comb_tips(const DrawScene& d, const DisplaySettings& settings, std::vector<Vec3>& out) {
+  std::vector<const CurvatureComb*> combs;
+  for (const auto* list : {&d.network_combs, &d.border_combs, &d.free_curve_combs})
+    for (const CurvatureComb& c : *list) combs.push_back(&c);
+  const Box box = d.bounds();
+  const double diagonal = box.empty() ? 0.0 : glm::length(box.hi - box.lo);
+  // As GpuScene and SceneRenderer::draw_combs size the teeth.
+  const double scale =
+      settings.comb_length.value_or(automatic_comb_scale_of(combs, diagonal)) * settings.comb_scale;
+  const double cap = kCombCap * kDefaultCombFraction * diagonal * settings.comb_scale;
+  if (!(scale > 0)) return;
+  for (const CurvatureComb* c : combs)
+    for (std::size_t i = 0; i < c->teeth.size() && i < c->points.size(); ++i) {
+      Vec3 tooth = scale * c->teeth[i];
+      const double len = glm::length(tooth);
+      if (!std::isfinite(len)) continue;
+      if (cap > 0 && len > cap) tooth *= cap / len;
+      out.push_back(c->points[i] + tooth);
+    }
+}
+
+std::vector<Vec3> framing_points(std::span<const DrawScene* const> scenes,
+                                 const DisplaySettings* settings) {
   std::vector<Vec3> points;
   for (const DrawScene* d : scenes) {
     for (const SurfaceMesh& m : d->surfaces)
@@ -105,6 +127,8 @@ std::vector<Vec3> framing_points(std::span<const DrawScene* const> scenes) {
       points.push_back(a.tip);
     }
     for (const Polyline& l : d->network_curves) points.insert(points.end(), l.begin(), l.end());
+    for (const Polyline& l : d->free_curves) points.insert(points.end(), l.begin(), l.end());
+    if (settings && settings->combs) append_comb_tips(*d, *settings, points);
   }
   return points;
 }
@@ -142,11 +166,12 @@ Camera default_camera_of(std::span<const SurfaceMesh* const> meshes, std::span<c
   return best;
 }
 
-Camera default_camera(std::span<const DrawScene* const> scenes, double aspect) {
+Camera default_camera(std::span<const DrawScene* const> scenes, double aspect,
+                      const DisplaySettings* settings) {
   std::vector<const SurfaceMesh*> meshes;
   for (const DrawScene* d : scenes)
     for (const SurfaceMesh& m : d->surfaces) meshes.push_back(&m);
-  return default_camera_of(meshes, framing_points(scenes), aspect);
+  return default_camera_of(meshes, framing_points(scenes, settings), aspect);
 }
 
 }  // namespace pl

@@ -10,6 +10,7 @@
 #include <span>
 
 #include "render/camera.hpp"
+#include "render/display_settings.hpp"
 #include "render/draw_scene.hpp"
 
 namespace pl {
@@ -23,16 +24,26 @@ Vec3 mean_normal(std::span<const SurfaceMesh* const> meshes);
 std::optional<Vec3> facing_direction(std::span<const SurfaceMesh* const> meshes);
 
 // The default camera for the scenes drawn side by side (one camera for all), framed on their
-// surfaces, nets, arrows and curves at this aspect. Facing a front, the camera looks along the
-// normal tilted 15 degrees, towards whichever side makes the front fill most of the view.
-Camera default_camera(std::span<const DrawScene* const> scenes, double aspect);
+// surfaces, nets, arrows and curves at this aspect, and with `settings` showing combs, on the
+// combs' tips too. Facing a front, the camera looks along the normal tilted 15 degrees, towards
+// whichever side makes the front fill most of the view.
+Camera default_camera(std::span<const DrawScene* const> scenes, double aspect,
+                      const DisplaySettings* settings = nullptr);
 // The same for meshes alone, framed on `points` (empty: on the meshes' vertices).
 Camera default_camera_of(std::span<const SurfaceMesh* const> meshes, std::span<const Vec3> points,
                          double aspect);
 // Its eye direction (unit, from the target towards the eye) at a 4:3 aspect.
 Vec3 default_view_direction(std::span<const SurfaceMesh* const> meshes);
 
-// Every point a frame should contain: surface vertices, control points, arrow ends, curve points.
-std::vector<Vec3> framing_points(std::span<const DrawScene* const> scenes);
+// Every point a frame should contain: surface vertices, control points, arrow ends, curve points
+// (network and free curves), and with `settings` showing combs the comb tips.
+std::vector<Vec3> framing_points(std::span<const DrawScene* const> scenes,
+                                 const DisplaySettings* settings = nullptr);
+
+// The tips of every comb of `scene` where the renderer draws them with `settings`: tooth length
+// per unit curvature comb_length (else the scene's automatic scale) times comb_scale, each tooth
+// cut to kCombCap reference lengths.
+void append_comb_tips(const DrawScene& scene, const DisplaySettings& settings,
+                      std::vector<Vec3>& out);
 
 }  // namespace pl

@@ -12,6 +12,12 @@ namespace pl {
 
 enum class BaseMode { Shaded, Isophotes, Zebra, Curvature };
 
+// Teeth longer than this many reference lengths (the automatic length at the reference
+// curvature, times the user's multiplier) are cut to it: near a cusp the curvature grows
+// without bound, and one tooth across the whole picture hides everything else. The envelope is
+// capped the same way, so a flat top on it marks a capped stretch.
+inline constexpr double kCombCap = 3.0;
+
 struct DisplaySettings {
   BaseMode base = BaseMode::Shaded;
   CurvatureKind curvature = CurvatureKind::Mean;  // for BaseMode::Curvature

@@ -39,12 +39,11 @@ struct Arrow {
   ArrowKind kind = ArrowKind::Tangent;
 };
 
-// The tag of a point's style in the shaders and keys: kind + kPointStyleStride * role (a stride
-// with room for more kinds, so a new kind does not renumber the others' tags).
-inline constexpr int kPointStyleStride = 8;
-static_assert(kControlPointKinds <= kPointStyleStride);
+// Room for this many point kinds in a style tag (the shader reads kind = tag % 8).
+inline constexpr int kPointStyleKinds = 8;
+// The tag of a point's style in the shaders and keys: kind + kPointStyleKinds * role.
 inline int point_style_tag(ControlPointKind kind, PointRole role) {
-  return static_cast<int>(kind) + kPointStyleStride * static_cast<int>(role);
+  return static_cast<int>(kind) + kPointStyleKinds * static_cast<int>(role);
 }
 
 // Which point styles (bit point_style_tag) a net has, and which arrow kinds (bit ArrowKind): the

@@ -236,7 +236,8 @@ void GpuScene::set_highlights(const std::vector<Polyline>& highlights) {
 
 void GpuScene::update_curves(std::span<const CurvatureComb* const> network_combs,
                              std::span<const CurvatureComb* const> borders,
-                             const std::vector<bool>& border_on_network) {
+                             const std::vector<bool>& border_on_network,
+                             std::span<const CurvatureComb* const> free_combs) {
   // Borders that are not network curves first: with the network curves shown, the others are
   // the same curves under them and are not drawn.
   std::vector<Vec3> lines;
@@ -248,7 +249,7 @@ void GpuScene::update_curves(std::span<const CurvatureComb* const> network_combs
     }
   }
   borders_.set(lines, {});
-  set_combs(network_combs, borders, border_on_network);
+  set_combs(network_combs, borders, border_on_network, free_combs);
 }
 
 void GpuScene::set_combs(std::span<const CurvatureComb* const> network_combs,

@@ -76,11 +76,12 @@ class GpuScene {
   // Only the highlighted curves (the editor's picked edge).
   void set_highlights(const std::vector<Polyline>& highlights);
   // Borders (the points of `borders`) and combs held outside a DrawScene (the editor keeps them
-  // once for both densities of a view); a border comb without teeth is a border without a comb.
-  // Pointers are read during the call only.
+  // once for both densities of a view); a border comb without teeth is a border without a comb;
+  // `free_combs`: the combs of the free curves. Pointers are read during the call only.
   void update_curves(std::span<const CurvatureComb* const> network_combs,
                      std::span<const CurvatureComb* const> borders,
-                     const std::vector<bool>& border_on_network);
+                     const std::vector<bool>& border_on_network,
+                     std::span<const CurvatureComb* const> free_combs = {});
   // The drag path: re-uploads one surface's attributes (its counts unchanged).
   void update_surface(std::size_t i, const SurfaceMesh& mesh) { surfaces_.update_surface(i, mesh); }
 

@@ -5,19 +5,20 @@
 
 #include <array>
 
-#include "core/patch/patch.hpp"  // ControlPointKind
 #include "render/color_map.hpp"
 
 namespace pl::palette {
 
-// Point kinds, in the core's ControlPointKind order (Boundary, Inner, Twin, Central,
-// FreeInterior). Editable points are filled with these, derived ones drawn as rings of them.
-inline constexpr std::array<Rgb, kControlPointKinds> kPointKinds{{
+// Point kinds, in the core's ControlPointKind order (Boundary, Inner, Twin, Central, Curve,
+// FreeInterior).
+// Editable points are filled with these, derived ones drawn as rings of them.
+inline constexpr std::array<Rgb, 6> kPointKinds{{
     {0.93f, 0.47f, 0.08f},  // boundary: orange square
     {0.16f, 0.45f, 0.90f},  // inner: blue disc
     {0.78f, 0.22f, 0.78f},  // twin: magenta diamond
     {0.13f, 0.62f, 0.30f},  // central: green triangle
-    {0.00f, 0.80f, 0.90f},  // free interior (GB faces of a network): cyan hexagon
+    {0.74f, 0.10f, 0.22f},  // curve (a free curve's point): crimson hexagon
+    {0.00f, 0.80f, 0.90f},  // free interior (of a network GB face): cyan pentagon
 }};
 inline constexpr Rgb kPointOutline{0.08f, 0.08f, 0.09f};
 inline constexpr Rgb kDerivedPointFill{0.98f, 0.98f, 0.97f};

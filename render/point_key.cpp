@@ -12,8 +12,6 @@ namespace pl {
 
 namespace {
 
-constexpr const char* kKindNames[kControlPointKinds] = {"boundary", "inner", "twin", "central",
-                                                        "free interior"};
 constexpr const char* kArrowNames[2] = {"tangent", "twist"};
 
 bool has(uint32_t bits, int bit) {
@@ -22,12 +20,22 @@ bool has(uint32_t bits, int bit) {
 
 }  // namespace
 
+const char* point_kind_name(ControlPointKind kind) {
+  static constexpr const char* kNames[] = {"boundary", "inner", "twin",
+                                           "central",  "curve", "free interior"};
+  static_assert(std::size(kNames) == palette::kPointKinds.size());
+  const auto k = static_cast<std::size_t>(kind);
+  return k < std::size(kNames) ? kNames[k] : "?";
+}
+
 PointKeyEntries PointKeyEntries::all() {
   uint32_t styles = 0;
   for (const PointRole role : {PointRole::Editable, PointRole::Derived})
-    for (int kind = 0; kind < kControlPointKinds; ++kind)
-      if (role == PointRole::Editable || ControlPointKind(kind) != ControlPointKind::FreeInterior)
-        styles |= 1u << point_style_tag(ControlPointKind(kind), role);  // free points: editable
+    for (std::size_t kind = 0; kind < palette::kPointKinds.size(); ++kind)
+      // Curve points and free interior points are always the user's: never derived.
+      if (role == PointRole::Editable || (ControlPointKind(kind) != ControlPointKind::Curve &&
+                                          ControlPointKind(kind) != ControlPointKind::FreeInterior))
+        styles |= 1u << point_style_tag(ControlPointKind(kind), role);
   return {styles, 0x3u};
 }
 
@@ -40,11 +48,11 @@ PointKeyLayout point_key_layout(const PointKeyEntries& e, double scale, double p
   k.scale = scale;
   k.pixel_scale = pixel_scale;
   for (const PointRole role : {PointRole::Editable, PointRole::Derived})
-    for (int kind = 0; kind < kControlPointKinds; ++kind)
+    for (int kind = 0; kind < int(palette::kPointKinds.size()); ++kind)
       if (has(e.point_styles, point_style_tag(ControlPointKind(kind), role)))
-        k.rows.push_back(
-            {std::string(kKindNames[kind]) + (role == PointRole::Derived ? ", derived" : ""), kind,
-             -1, role});
+        k.rows.push_back({std::string(point_kind_name(ControlPointKind(kind))) +
+                              (role == PointRole::Derived ? ", derived" : ""),
+                          kind, -1, role});
   for (int arrow = 0; arrow < 2; ++arrow)
     if (has(e.arrow_kinds, arrow)) k.rows.push_back({kArrowNames[arrow], -1, arrow});
   if (k.rows.empty()) return k;

@@ -14,14 +14,18 @@
 
 namespace pl {
 
+// "boundary", "inner", "twin", "central", "curve".
+const char* point_kind_name(ControlPointKind kind);
+
 // Entries as bit sets: bit point_style_tag(kind, role) of the point styles, bit ArrowKind of the
 // arrow kinds (GpuScene::point_styles and arrow_kinds give a scene's).
 struct PointKeyEntries {
   uint32_t point_styles = 0;
   uint32_t arrow_kinds = 0;
   bool empty() const { return point_styles == 0 && arrow_kinds == 0; }
-  static PointKeyEntries all();  // every kind in both roles (free interior: editable only),
-                                 // both arrow kinds
+  // Every kind in both roles (curve and free interior points editable only: they are the user's),
+  // both arrow kinds.
+  static PointKeyEntries all();
   static PointKeyEntries of(const DrawScene& scene);
   PointKeyEntries& operator|=(const PointKeyEntries& o) {
     point_styles |= o.point_styles;

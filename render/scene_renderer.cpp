@@ -13,11 +13,6 @@ constexpr int kColorMapEntries = 1024;
 constexpr float kOverlayDepthBias = 4e-4f;
 // Point sprites are pulled towards the eye by this many radii (point.vert.glsl).
 constexpr float kPointDepthPush = 3.0f;
-// Teeth longer than this many reference lengths (the automatic length at the reference
-// curvature, times the user's multiplier) are cut to it: near a cusp the curvature grows
-// without bound, and one tooth across the whole picture hides everything else. The envelope is
-// capped the same way, so a flat top on it marks a capped stretch.
-constexpr double kCombCap = 3.0;
 
 void set(GLint loc, const Vec3& v) {
   glUniform3f(loc, static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z));

@@ -1,9 +1,9 @@
 #version 330 core
 // A control point: its shape says its kind (boundary square, inner disc, twin diamond, central
-// triangle, free interior hexagon), its fill whether it is editable (filled with the kind's colour, dark outline) or
+// triangle, curve hexagon, free interior pentagon), its fill whether it is editable (filled with the kind's colour, dark outline) or
 // derived (a ring of the kind's colour around a light centre). Shapes are signed distances in
 // pixels, antialiased over one pixel.
-uniform vec3 u_kind_colors[5];  // ControlPointKind order
+uniform vec3 u_kind_colors[8];  // ControlPointKind order (the kinds there are)
 uniform vec3 u_outline;
 uniform vec3 u_derived_fill;
 uniform float u_alpha;
@@ -27,16 +27,24 @@ float shape(int kind, vec2 p, float r) {
   }
   if (kind == 2) return (abs(p.x) + abs(p.y) - 1.2 * r) * 0.70710678;
   if (kind == 3) return triangle(p, 0.75 * r);
-  if (kind == 4) {  // a hexagon with flat top and bottom
+  // Hexagon, two vertices on the vertical, inradius 0.93 r (about the square's area).
+  if (kind == 4) {
     vec2 q = abs(p);
-    return max(dot(q, vec2(0.8660254, 0.5)), q.y) - 0.93 * r;
+    return max(dot(q, vec2(0.5, 0.8660254)), q.x) - 0.93 * r;
+  }
+  // Regular pentagon pointing up (a GB face's free point), inradius 0.86 r.
+  if (kind == 5) {
+    float e = max(-p.y, max(dot(p, vec2(0.9510565, -0.3090170)),
+                            dot(p, vec2(-0.9510565, -0.3090170))));
+    e = max(e, max(dot(p, vec2(0.5877853, 0.8090170)), dot(p, vec2(-0.5877853, 0.8090170))));
+    return e - 0.86 * r;
   }
   return length(p) - r;
 }
 
 void main() {
   int tag = int(f_tag + 0.5);
-  int kind = clamp(tag % 8, 0, 4);  // tag = kind + 8 * role (render/draw_scene.hpp)
+  int kind = clamp(tag % 8, 0, 7);  // kPointStyleKinds
   bool derived = tag >= 8;
   float h = 0.8 * f_size + 1.0;
   vec2 p = f_uv * h;  // pixels from the centre

@@ -92,18 +92,22 @@ Polyline free_curve_polyline(const SceneCurve& c) {
   return l;
 }
 
+CurvatureComb free_curve_span_comb(const SceneCurve& c, std::pair<double, double> span,
+                                   int comb_teeth) {
+  const double a = span.first, len = span.second - span.first;
+  return curvature_comb(
+      [&](double u) {
+        CurvePoint p = evaluate(c, a + len * u);
+        p.d1 *= len, p.d2 *= len * len;  // derivatives in u (the comb needs their direction)
+        return p;
+      },
+      comb_teeth);
+}
+
 std::vector<CurvatureComb> free_curve_combs(const SceneCurve& c, int comb_teeth) {
   std::vector<CurvatureComb> combs;
-  for (const auto& [a, b] : curve_spans(c)) {
-    const double len = b - a;
-    combs.push_back(curvature_comb(
-        [&, a = a](double u) {
-          CurvePoint p = evaluate(c, a + len * u);
-          p.d1 *= len, p.d2 *= len * len;  // derivatives in u (the comb needs their direction)
-          return p;
-        },
-        comb_teeth));
-  }
+  for (const auto& span : curve_spans(c))
+    combs.push_back(free_curve_span_comb(c, span, comb_teeth));
   return combs;
 }
 
@@ -115,8 +119,7 @@ void append_free_curve(DrawScene& d, const SceneCurve& c, int comb_teeth) {
   // The control polygon; a Hermite curve's tangents as arrows to its equivalent Bézier handles.
   uint32_t previous = 0;
   for (std::size_t i = 0; i < c.points.size(); ++i) {
-    const uint32_t id =
-        add_point(d.net, c.points[i], ControlPointKind::Boundary, PointRole::Editable);
+    const uint32_t id = add_point(d.net, c.points[i], ControlPointKind::Curve, PointRole::Editable);
     if (i > 0 && c.type != CurveType::Hermite) d.net.segments.push_back({previous, id});
     previous = id;
   }

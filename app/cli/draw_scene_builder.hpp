@@ -52,6 +52,9 @@ std::vector<CurvatureComb> network_combs(const Network& network, int comb_teeth)
 int free_curve_samples_per_span(const SceneCurve& curve);
 Polyline free_curve_polyline(const SceneCurve& curve);
 std::vector<CurvatureComb> free_curve_combs(const SceneCurve& curve, int comb_teeth);
+// The comb of one span [t0, t1] of the curve (one of free_curve_combs).
+CurvatureComb free_curve_span_comb(const SceneCurve& curve, std::pair<double, double> span,
+                                   int comb_teeth);
 // The curve, its comb (comb_teeth > 0) and its control polygon appended to d.
 void append_free_curve(DrawScene& d, const SceneCurve& curve, int comb_teeth);
 

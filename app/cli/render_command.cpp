@@ -134,6 +134,12 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
       box.add(b.lo);
       box.add(b.hi);
     }
+    // Combs stand out of the curves: a preset view frames their tips too, as the default does.
+    if (settings.combs) {
+      std::vector<Vec3> tips;
+      append_comb_tips(d, settings, tips);
+      for (const Vec3& p : tips) box.add(p);
+    }
     for (const SurfaceMesh& m : d.surfaces) meshes.push_back(&m);
     check_finite(d.surfaces, file);  // a NaN would draw nothing, or garbage, without a word
     scenes.push_back(&d);
@@ -154,7 +160,7 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
   }
   request.key_entries = key;
   const double aspect = panel_aspect(request);
-  request.camera = !view    ? default_camera(scenes, aspect)
+  request.camera = !view    ? default_camera(scenes, aspect, &settings)
                    : preset ? preset_camera(*preset, box, aspect)
                             : read_camera_file(*view, box, aspect);
 

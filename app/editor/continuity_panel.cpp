@@ -2,7 +2,9 @@
 // comparison's Gregory and GB fillings, each labelled) a one-line verdict, per shared edge the
 // G0 gap, G1 normal angle and mean-curvature jump of the fine surfaces, and the vertices whose
 // end tangents were projected into their tangent plane. Edges over the threshold are marked and
-// the worst one is drawn in the highlight colour in its view; a row click selects its edge.
+// the worst one is drawn in the highlight colour in its view; a row click selects its edge. Then
+// the joints of the free curves (an end on another curve's end or start) with their G0/G1/G2
+// class, gap, tangent angle and curvature jump.
 #include <imgui.h>
 
 #include <algorithm>
@@ -111,6 +113,53 @@ void follow_continuity(ContinuityMonitor& monitor, const SceneViews& views, cons
   monitor.follow(doc.scene(), inputs, doc.revision());
 }
 
+namespace {
+
+// The joints of the free curves: which ends meet, the class and the figures (the same as
+// `patchlab analyze` reports); a row selects the two curves.
+void draw_curve_joints(const SidePanel& p) {
+  if (!p.curve_marks || p.curve_marks->joints().empty()) return;
+  const CurveMarks& marks = *p.curve_marks;
+  const std::vector<SceneCurve>& curves = p.doc.scene().curves;
+  ImGui::Separator();
+  ImGui::TextUnformatted("Curve joints");
+  const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
+                                ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingStretchProp;
+  const float rows = std::min<float>(float(marks.joints().size()), 8.0f);
+  const float h = ImGui::GetTextLineHeightWithSpacing() * (rows + 1.6f);
+  if (!ImGui::BeginTable("curve_joints", 5, flags, ImVec2(0, h))) return;
+  ImGui::TableSetupScrollFreeze(0, 1);
+  // The ends' names need the room; the figures are short.
+  ImGui::TableSetupColumn("joint", ImGuiTableColumnFlags_WidthStretch, 3.0f);
+  ImGui::TableSetupColumn("G", ImGuiTableColumnFlags_WidthStretch, 0.45f);
+  ImGui::TableSetupColumn("G0 gap", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+  ImGui::TableSetupColumn("G1 deg", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+  ImGui::TableSetupColumn("k jump", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+  ImGui::TableHeadersRow();
+  for (std::size_t i = 0; i < marks.joints().size(); ++i) {
+    const JointReport& j = marks.joints()[i];
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    const std::string label = joint_ends(j, curves) + "##joint" + std::to_string(i);
+    const SelectionItem a = SelectionItem::curve(j.curves[0]),
+                        b = SelectionItem::curve(j.curves[1]);
+    if (ImGui::Selectable(label.c_str(), p.selection.contains(a) && p.selection.contains(b),
+                          ImGuiSelectableFlags_SpanAllColumns))
+      p.selection.set({a, b});
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(joint_class(j, marks.size()).c_str());
+    ImGui::TableNextColumn();
+    ImGui::Text("%.2g", j.gap);
+    ImGui::TableNextColumn();
+    ImGui::Text("%.3g", j.tangent_angle_deg);
+    ImGui::TableNextColumn();
+    ImGui::Text("%.3g", j.curvature_jump);
+  }
+  ImGui::EndTable();
+}
+
+}  // namespace
+
 void draw_continuity_section(const SidePanel& p) {
   double& threshold = p.prefs.continuity_threshold_deg;
   ImGui::InputDouble("Warn above", &threshold, 0, 0, "%.3g deg");
@@ -122,6 +171,7 @@ void draw_continuity_section(const SidePanel& p) {
   const auto& fillings = p.continuity.fillings();
   for (std::size_t i = 0; i < fillings.size(); ++i) draw_filling(p, fillings[i], i, threshold);
   if (fillings.empty()) ImGui::TextDisabled("Waiting for the surfaces.");
+  draw_curve_joints(p);
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
   ImGui::TextWrapped(
       "Yellow: edges over the threshold; the worst is drawn yellow in its view. "

@@ -1,7 +1,7 @@
-// The Selection section of a free curve (shown when one of its points is selected): its type,
-// degree, point count and parameter range, the selected point's weight (typed: a B-spline becomes
-// a NURBS curve), and the curve operations at a typed parameter t. Every change is one command
-// (one undo step); a refusal shows in the status bar.
+// The Selection section of a free curve (shown when the curve or one of its points is selected):
+// its type, degree, point count and parameter range, the selected point's weight (typed: a B-spline
+// becomes a NURBS curve), and the curve operations at a typed parameter t. Every change is one
+// command (one undo step); a refusal shows in the status bar.
 #include <imgui.h>
 
 #include <cstdio>
@@ -43,7 +43,7 @@ void draw_curve_section(const SidePanel& p, int c, int point) {
   row("degree", std::to_string(curve_degree(curve)));
   row("points", std::to_string(curve.points.size()));
   row("t range", number(curve.t_min()) + " .. " + number(curve.t_max()));
-  if (curve.type == CurveType::BSpline || curve.type == CurveType::Nurbs) {
+  if (point >= 0 && (curve.type == CurveType::BSpline || curve.type == CurveType::Nurbs)) {
     const double w = curve.weights.empty() ? 1.0 : curve.weights.at(point);
     static double edit = 1;
     static std::string editing;

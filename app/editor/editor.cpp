@@ -94,7 +94,8 @@ Box Editor::scene_box() const {
 PickScene Editor::pick_scene(int panel, std::vector<SelectionItem>& items) const {
   const LiveSurfaces& live = views_.panel(panel).shown();
   items = surface_items(live.surfaces());
-  return {live.draw().surfaces, items, live.draw().network_curves, &live.points()};
+  return {live.draw().surfaces, items, live.draw().network_curves, &live.points(),
+          live.draw().free_curves};
 }
 
 ToolContext Editor::tool_context() {
@@ -120,7 +121,6 @@ void Editor::after_document_replaced() {
   followed_revision_ = UINT64_MAX;
   // --compare applies to the first document; later ones keep the layout the user chose.
   rebuild_views(std::exchange(options_.compare, false) || views_.compare());
-  if (std::exchange(options_.difference, false)) views_.difference = true;
 }
 
 void Editor::rebuild_views(bool compare) {
@@ -161,6 +161,7 @@ void Editor::follow_document() {
   // Continuity figures follow the fine surfaces only: analysing every drag step would cost
   // more than the drag itself.
   follow_continuity(continuity_, views_, doc);
+  curve_marks_.follow(doc.scene().curves);
 }
 
 NetFocus Editor::net_focus() const {
@@ -223,7 +224,8 @@ void Editor::draw_interface(const ColorRange& range) {
   const EditorLayout l = layout();
   ToolContext tools = tool_context();
   SidePanel panel{prefs_,      views_, session_.doc(), selection_, actions_, continuity_,
-                  work_plane_, tools_, range,          ui_scale_,  &tools,   {}};
+                  work_plane_, tools_, range,          ui_scale_,  &tools,   &curve_marks_,
+                  {}};
   if (debugging())
     panel.item_probe = [this](const std::string& label, float x0, float y0, float x1, float y1) {
       report_panel_item(label, x0, y0, x1, y1);
@@ -306,6 +308,7 @@ void Editor::frame() {
   f.selection = &selection_;
   f.work_plane = &work_plane_;
   f.continuity = &continuity_;
+  f.curve_marks = &curve_marks_;
   f.viewport = l.viewport();
   f.panels = l.panels(views_.compare());
   f.hover_panel = mouse_.panel;

@@ -32,6 +32,7 @@
 #include "app/editor/logic/autosave.hpp"
 #include "app/editor/logic/cad_export_job.hpp"
 #include "app/editor/logic/continuity_monitor.hpp"
+#include "app/editor/logic/curve_marks.hpp"
 #include "app/editor/logic/document_session.hpp"
 #include "app/editor/logic/editor_layout.hpp"
 #include "app/editor/logic/preferences.hpp"
@@ -176,6 +177,7 @@ class Editor {
   ToolBox tools_;
   WorkPlane work_plane_;
   ContinuityMonitor continuity_;
+  CurveMarks curve_marks_;  // knot ticks and joints of the free curves
   ActionRegistry actions_;
   StatusLine status_;
   FileDialogs dialogs_;

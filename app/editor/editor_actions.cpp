@@ -19,7 +19,8 @@ namespace {
 
 constexpr ContextSet kOnObjects =
     context_bit(ContextTarget::Point) | context_bit(ContextTarget::Edge) |
-    context_bit(ContextTarget::Face) | context_bit(ContextTarget::Patch);
+    context_bit(ContextTarget::Face) | context_bit(ContextTarget::Patch) |
+    context_bit(ContextTarget::Curve);
 
 }  // namespace
 
@@ -147,7 +148,8 @@ void Editor::register_actions() {
                              [this] { show_curvature_graph_ = !show_curvature_graph_; });
   graph.separator_before = true;
   graph.checked = [this] { return show_curvature_graph_; };
-  graph.context = context_bit(ContextTarget::Point) | context_bit(ContextTarget::Empty);
+  graph.context = context_bit(ContextTarget::Point) | context_bit(ContextTarget::Curve) |
+                  context_bit(ContextTarget::Empty);
   graph.enabled = [this] { return selected_curve(session_.doc().scene(), selection_).has_value(); };
   r.add(std::move(graph));
   Action rename = make_action("edit.rename", "Edit", "Rename...", {"F2"},

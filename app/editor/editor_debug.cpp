@@ -3,7 +3,8 @@
 // Lines on stdout:
 //   debug-point X Y window WX WY world-per-pixel S right RX RY RZ up UX UY UZ   (a point)
 //   debug-face NAME X Y window WX WY      (a pixel that selects the face, patch or edge NAME;
-//   debug-edge NAME X Y window WX WY       NAME as "face 1", "edge 3", "patch 0")
+//   debug-edge NAME X Y window WX WY       NAME as "face 1", "edge 3", "patch 0";
+//   debug-curve NAME X Y window WX WY      a free curve's line, NAME as "curve 0")
 //   selection: ITEM, ITEM, ...            (after every change; "selection: none" when empty)
 //   menu-item LABEL X Y window WX WY      (the centre of each context-menu item, once laid out)
 //   panel-item LABEL X Y window WX WY     (the centre of a side-panel button, when it appears or
@@ -21,6 +22,8 @@
 //   vertex I X Y
 //   curve-point C K X Y                          (control point K of free curve C)
 //   edge I X Y | edge I hidden                   (a pixel that picks the edge's curve)
+//   curve C X Y | curve C hidden                 (a pixel that picks free curve C by its line)
+//   joint A B G2 gap G angle D jump J            (a joint of free curves A and B: class, figures)
 //   face I X Y | face I hidden                   (a pixel that picks the face's surface)
 //   free-point F NAME X Y                        (free point NAME of GB face F as drawn:
 //                                                 "centre" or "S,J,K"; shown points only)
@@ -66,7 +69,9 @@ void Editor::report_debug_items() {
     const DisplaySettings& d = prefs_.display;
     const auto px = find_pixel_for(pickers_[0], pick_scene(0, items), camera, rects[0], item,
                                    {d.control_net, d.network_curves});
-    const char* kind = item.kind == SelectionItem::Kind::Edge ? "debug-edge" : "debug-face";
+    const char* kind = item.kind == SelectionItem::Kind::Edge    ? "debug-edge"
+                       : item.kind == SelectionItem::Kind::Curve ? "debug-curve"
+                                                                 : "debug-face";
     if (px)
       std::printf("%s %s %.3f %.3f window %d %d\n", kind, describe(item).c_str(), px->x, px->y, wx,
                   wy);
@@ -172,6 +177,16 @@ void Editor::report_state() {
         << pixel(find_pixel_for(pickers_[0], picks, camera, rects[0], SelectionItem::edge(int(e)),
                                 {d.control_net, d.network_curves}))
         << "\n";
+  for (std::size_t c = 0; c < scene.curves.size(); ++c)
+    out << "curve " << c << " "
+        << pixel(find_pixel_for(pickers_[0], picks, camera, rects[0], SelectionItem::curve(int(c)),
+                                {d.control_net, d.network_curves}))
+        << "\n";
+  // The joints as the view labels them (CurveMarks follows the document every frame).
+  for (const JointReport& j : curve_marks_.joints())
+    out << "joint " << j.curves[0] << " " << j.curves[1] << " "
+        << joint_class(j, curve_marks_.size()) << " gap " << j.gap << " angle "
+        << j.tangent_angle_deg << " jump " << j.curvature_jump << "\n";
   for (std::size_t f = 0; f < net.faces.size(); ++f)
     out << "face " << f << " "
         << pixel(find_pixel_for(pickers_[0], picks, camera, rects[0], SelectionItem::face(int(f)),

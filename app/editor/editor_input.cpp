@@ -180,6 +180,7 @@ void Editor::handle_mouse() {
                      : item->kind == SelectionItem::Kind::Edge  ? ContextTarget::Edge
                      : item->kind == SelectionItem::Kind::Face  ? ContextTarget::Face
                      : item->kind == SelectionItem::Kind::Patch ? ContextTarget::Patch
+                     : item->kind == SelectionItem::Kind::Curve ? ContextTarget::Curve
                                                                 : ContextTarget::Point;
           open_context_menu();
           debug_.menu_frames = 0;
@@ -224,6 +225,8 @@ void Editor::handle_mouse() {
   mouse_.pressed_placement = placement(ctx, pointer_event(rect, &mouse_.pressed));
   if (mouse_.under.point >= 0)
     mouse_.pressed_point = scene.points->positions[mouse_.under.point];
+  else if (mouse_.under.curve >= 0)
+    mouse_.pressed_point = mouse_.under.curve_point;  // where a curve action acts
   else if (mouse_.under.surface)
     mouse_.pressed_point = mouse_.under.surface->position;
   if (left) {

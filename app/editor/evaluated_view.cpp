@@ -139,7 +139,7 @@ EvaluatedView::EvaluatedView(ViewEvaluation v)
   // The curves are at the evaluation's revision already: upload them.
   fine_curves_serial_ = curves_->serial();
   gpu_fine_.update_curves(curves_->network_comb_refs(), drawn_borders(),
-                          curves_->border_on_network());
+                          curves_->border_on_network(), curves_->free_comb_refs());
 }
 
 bool EvaluatedView::follow_curves(const Document& doc, const LiveSurfaces& live, uint64_t from,
@@ -149,7 +149,8 @@ bool EvaluatedView::follow_curves(const Document& doc, const LiveSurfaces& live,
                   &live.evaluation().filling().topology());
   if (gpu_serial == curves_->serial()) return false;
   gpu_serial = curves_->serial();
-  gpu.update_curves(curves_->network_comb_refs(), drawn_borders(), curves_->border_on_network());
+  gpu.update_curves(curves_->network_comb_refs(), drawn_borders(), curves_->border_on_network(),
+                    curves_->free_comb_refs());
   return true;
 }
 

@@ -28,7 +28,7 @@ struct PickData {
   std::vector<SelectionItem> items;
   std::vector<Polyline> curves;
   ScenePoints points;
-  PickScene scene() const { return {meshes, items, curves, &points}; }
+  PickScene scene() const { return {meshes, items, curves, &points, {}}; }
 };
 
 PickData pick_data(const Scene& scene, int density) {

@@ -114,7 +114,7 @@ void interior_section(const SidePanel& p, int face) {
   action_button(p, "face.interior.reset", "Reset interior");
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
   ImGui::TextWrapped(
-      "Drag the hexagon points (the free points) in the view; the boundary and the G1 joins "
+      "Drag the pentagon points (the free points) in the view; the boundary and the G1 joins "
       "stay.");
   ImGui::PopStyleColor();
 }
@@ -243,14 +243,15 @@ void draw_selection_section(const SidePanel& p) {
     if (i.kind == Kind::Face) face_section(p, *face_properties(scene, i.index));
     if (i.kind == Kind::Edge) edge_section(p, *edge_properties(scene, i.index));
     if (i.kind == Kind::Patch) patch_section(*patch_properties(scene, i.index));
+    if (i.kind == Kind::Curve) draw_curve_section(p, i.index, -1);
     if (i.kind == Kind::Point && i.point.kind == PointRef::Kind::NetworkVertex)
       vertex_section(p, *vertex_properties(scene, i.point.index));
   } else {
-    int counts[4] = {0, 0, 0, 0};
+    int counts[5] = {0, 0, 0, 0, 0};
     for (const SelectionItem& i : present) ++counts[int(i.kind)];
-    static const char* names[4] = {"points", "edges", "faces", "patches"};
+    static const char* names[5] = {"points", "edges", "faces", "patches", "curves"};
     std::string summary;
-    for (int k = 0; k < 4; ++k)
+    for (int k = 0; k < 5; ++k)
       if (counts[k])
         summary += (summary.empty() ? "" : ", ") + std::to_string(counts[k]) + " " + names[k];
     ImGui::Text("%s", summary.c_str());

@@ -8,6 +8,7 @@
 
 #include "app/editor/logic/actions.hpp"
 #include "app/editor/logic/continuity_monitor.hpp"
+#include "app/editor/logic/curve_marks.hpp"
 #include "app/editor/logic/document_session.hpp"
 #include "app/editor/logic/preferences.hpp"
 #include "app/editor/logic/selection.hpp"
@@ -27,7 +28,8 @@ struct SidePanel {
   ToolBox& tools;
   ColorRange range;  // the colour range shown (a "fixed range" starts from it)
   float ui_scale = 1;
-  ToolContext* tool_context = nullptr;  // what the active tool's options act through
+  ToolContext* tool_context = nullptr;      // what the active tool's options act through
+  const CurveMarks* curve_marks = nullptr;  // the joints of the free curves (Continuity)
   // Scripts (--debug-state): told where a panel button is (its label and window rectangle).
   std::function<void(const std::string&, float, float, float, float)> item_probe;
 };
@@ -41,7 +43,7 @@ void draw_tools_section(const SidePanel& p);
 void draw_tool_options(const SidePanel& p);
 void draw_selection_section(const SidePanel& p);
 // The free curve `curve` of the selected curve point `point` (in the Selection section).
-void draw_curve_section(const SidePanel& p, int curve, int point);
+void draw_curve_section(const SidePanel& p, int curve, int point);  // point -1: the whole curve
 // Returns true when the densities changed.
 bool draw_display_section(const SidePanel& p);
 void draw_work_plane_section(const SidePanel& p);

@@ -9,6 +9,7 @@
 #include "app/editor/logic/editor_layout.hpp"
 #include "app/editor/theme.hpp"
 #include "render/palette.hpp"
+#include "render/point_key.hpp"
 
 namespace pl {
 
@@ -69,12 +70,12 @@ void draw_point_overlays(const OverlayFrame& o) {
       if (const auto q = screen(pts.positions[i])) {
         if (!o.hover->derived_point) {
           dl->AddCircle(im(*q), 10.0f * s, rgba(1, 1, 1, 0.95f), 0, 2.0f * s);
-          ImGui::SetTooltip("%s", describe(*pts.refs[i]).c_str());
+          ImGui::SetTooltip("%s (%s point)", describe(*pts.refs[i]).c_str(),
+                            point_kind_name(pts.kinds[i]));
         } else {
-          static const char* kinds[] = {"boundary", "inner", "twin", "central"};
           dl->AddCircle(im(*q), 10.0f * s, rgba(0.7f, 0.7f, 0.7f, 0.8f), 0, 1.5f * s);
           ImGui::SetTooltip("derived %s point (follows the network; not editable)",
-                            kinds[int(pts.kinds[i])]);
+                            point_kind_name(pts.kinds[i]));
         }
       }
     }

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "app/editor/logic/continuity_monitor.hpp"
+#include "app/editor/logic/curve_marks.hpp"
 #include "app/editor/logic/live_surfaces.hpp"
 #include "app/editor/logic/plane_handles.hpp"
 #include "app/editor/logic/preferences.hpp"
@@ -29,9 +30,14 @@ struct OverlayFrame {
   const std::optional<ProbeHit>* probe;
   float ui_scale;
   int panel = 0;  // which view panel (the continuity figures of its filling)
+  const CurveMarks* curve_marks = nullptr;
 };
 
 void draw_point_overlays(const OverlayFrame& o);
+// The knots of the free curves as ticks across them (a multiple knot longer, with its
+// multiplicity), their ends, and a label at each joint of two curves with its G0/G1/G2 figures
+// (curve_overlays.cpp).
+void draw_curve_marks(const OverlayFrame& o);
 // "Gregory" / "Generalized Bezier" at the top left of a comparison panel, and the divider.
 void draw_panel_label(const OverlayFrame& o, int panel, bool difference, const ViewRect& whole);
 void draw_axis_triad(const OverlayFrame& o);

@@ -65,6 +65,7 @@ void ViewportPainter::update_guides(const ViewportFrame& f, int panel) {
   const LiveSurfaces& live = f.views->panel(panel).shown();
   const Scene& scene = f.doc->scene();
   const auto& curves = live.draw().network_curves;
+  const auto& free_curves = live.draw().free_curves;
   // Which face or patch each surface draws (built only when a highlight changes).
   std::vector<SelectionItem> items;
   auto surface_item = [&](std::size_t s) -> const SelectionItem& {
@@ -84,6 +85,8 @@ void ViewportPainter::update_guides(const ViewportFrame& f, int panel) {
         edges.insert(edges.end(), sides.begin(), sides.end());
     for (int e : edges)
       if (e >= 0 && e < int(curves.size())) append_segments(curves[e], lines);
+    for (int c : f.selection->of_kind(SelectionItem::Kind::Curve))
+      if (c >= 0 && c < int(free_curves.size())) append_segments(free_curves[c], lines);
     if (!lines.empty() || !g.selected.empty()) g.selected.set(lines, {});
     g.selected_surfaces.clear();
     const std::set<int> faces_set(faces.begin(), faces.end());
@@ -107,6 +110,9 @@ void ViewportPainter::update_guides(const ViewportFrame& f, int panel) {
     if (hovered && hovered->kind == SelectionItem::Kind::Edge &&
         hovered->index < int(curves.size()))
       append_segments(curves[hovered->index], lines);
+    if (hovered && hovered->kind == SelectionItem::Kind::Curve &&
+        hovered->index < int(free_curves.size()))
+      append_segments(free_curves[hovered->index], lines);
     if (hovered && hovered->kind != SelectionItem::Kind::Point)
       for (std::size_t s = 0; s < surfaces; ++s)
         if (surface_item(s) == *hovered) g.hovered_surface = int(s);
@@ -245,7 +251,9 @@ void ViewportPainter::paint(const ViewportFrame& f, const ColorRange& range) {
                    i == f.hover_panel ? f.hover : nullptr,
                    f.probe,
                    f.ui_scale,
-                   i};
+                   i,
+                   f.curve_marks};
+    draw_curve_marks(o);
     draw_point_overlays(o);
     if (f.views->compare()) draw_panel_label(o, i, f.views->showing_difference(), f.viewport);
     draw_axis_triad(o);

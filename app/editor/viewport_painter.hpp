@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "app/editor/logic/continuity_monitor.hpp"
+#include "app/editor/logic/curve_marks.hpp"
 #include "app/editor/logic/preferences.hpp"
 #include "app/editor/logic/scene_picker.hpp"
 #include "app/editor/logic/selection.hpp"
@@ -36,6 +37,7 @@ struct ViewportFrame {
   const Selection* selection = nullptr;
   const WorkPlane* work_plane = nullptr;
   const ContinuityMonitor* continuity = nullptr;
+  const CurveMarks* curve_marks = nullptr;
   ViewRect viewport;                  // the whole 3D area
   std::vector<ViewRect> panels;       // one per view panel
   int hover_panel = -1;               // panel under the cursor

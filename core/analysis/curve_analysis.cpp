@@ -169,15 +169,31 @@ JointReport joint_figures(const CurvePoint& a, const CurvePoint& b) {
   r.gap = glm::length(a.p - b.p);
   r.tangent_angle_deg =
       std::atan2(glm::length(glm::cross(a.d1, b.d1)), glm::dot(a.d1, b.d1)) * 180.0 / M_PI;
-  r.curvature_jump = glm::length(curvature_vector(a) - curvature_vector(b));
+  const Vec3 ka = curvature_vector(a), kb = curvature_vector(b);
+  r.curvature_jump = glm::length(ka - kb);
+  r.curvature = {glm::length(ka), glm::length(kb)};
   return r;
 }
 
-std::vector<JointReport> curve_joints(std::span<const SceneCurve> curves) {
+int joint_continuity(const JointReport& j, double size, double angle_deg, double relative) {
+  if (!(j.tangent_angle_deg <= angle_deg)) return 0;
+  const double kappa = std::max(j.curvature[0], j.curvature[1]);
+  const double straight = size > 0 ? relative / size : 0.0;
+  if (j.curvature_jump <= relative * kappa || (kappa <= straight && j.curvature_jump <= straight))
+    return 2;
+  return 1;
+}
+
+double curves_size(std::span<const SceneCurve> curves) {
+  if (curves.empty()) return 0.0;
   Vec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
   for (const SceneCurve& c : curves)
     for (const Vec3& q : spline_form(c).points) lo = glm::min(lo, q), hi = glm::max(hi, q);
-  const double tol = curves.empty() ? 0.0 : 1e-9 * glm::length(hi - lo);
+  return glm::length(hi - lo);
+}
+
+std::vector<JointReport> curve_joints(std::span<const SceneCurve> curves) {
+  const double tol = 1e-9 * curves_size(curves);
   // Each end with its derivatives pointing along the direction of travel out of the joint: the
   // end of a curve arrives as it runs; its start arrives when the curve is run backwards
   // (C' negated, C'' kept).
@@ -204,6 +220,8 @@ std::vector<JointReport> curve_joints(std::span<const SceneCurve> curves) {
       if (!f.start) leave.d1 = -leave.d1;
       JointReport r = joint_figures(arrive, leave);
       r.curves = {e.curve, f.curve};
+      r.at_start = {e.start, f.start};
+      r.position = e.p.p;
       out.push_back(r);
     }
   return out;

@@ -22,8 +22,20 @@ struct CurveReport {
 
 struct JointReport {
   std::array<int, 2> curves{-1, -1};
+  // Per curve: its start (true) or end (false) is the one at the joint.
+  std::array<bool, 2> at_start{false, false};
+  Vec3 position{0.0};  // the first curve's end point there (where the editor labels the joint)
   double gap = 0, tangent_angle_deg = 0, curvature_jump = 0;
+  std::array<double, 2> curvature{0, 0};  // |kappa| of each curve at the joint
 };
+
+// The geometric continuity a joint's figures show: 2 (G2) when the tangents agree within
+// `angle_deg` and the curvature vectors within `relative` of the larger curvature (or both
+// curvatures are below `relative` / size, straight there), 1 (G1) when only the tangents agree,
+// else 0 (G0: the ends meet). `size`: the curves' size (the same one curve_joints measures
+// gaps with).
+int joint_continuity(const JointReport& j, double size, double angle_deg = 1e-6,
+                     double relative = 1e-6);
 
 // Arc length by Gauss-Legendre quadrature on every span, subdivided until two successive
 // refinements agree to 1e-13 relative.
@@ -40,6 +52,9 @@ CurveReport analyze_curve(const SceneCurve& c, const std::string& name, int per_
 // travel) and the next leaves (b): the distance, the angle between the tangents in degrees and
 // the length of the difference of the curvature vectors.
 JointReport joint_figures(const CurvePoint& a, const CurvePoint& b);
+
+// The curves' size: the diagonal of the bounding box of their (spline form's) control points.
+double curves_size(std::span<const SceneCurve> curves);
 
 // Every pair of curve ends within 1e-9 of the curves' size (the diagonal of the bounding box of
 // their control points): an end and the start or end of another curve, or the two ends of one

@@ -16,10 +16,10 @@
 namespace pl {
 
 // How a control point is drawn and what it means to the designer.
-// FreeInterior: a free interior point of a network GB face (moved by its stored offset), shown by
-// the editor; no patch returns it.
-enum class ControlPointKind { Boundary, Inner, Twin, Central, FreeInterior };
-inline constexpr int kControlPointKinds = 5;
+// Curve: a control point of a free curve of a scene (no patch has one; the renderer and the
+// editor draw and name curve points by it). FreeInterior: a free interior point of a network GB
+// face (moved by its stored offset; no patch returns it, the editor shows it).
+enum class ControlPointKind { Boundary, Inner, Twin, Central, Curve, FreeInterior };
 
 class Patch {
  public:

@@ -5,7 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "app/document/curve_commands.hpp"
+#include "app/editor/logic/selection_actions.hpp"
+#include "app/editor/logic/selection_properties.hpp"
 #include "curve_test_util.hpp"
 
 namespace pl::test {
@@ -67,6 +71,47 @@ TEST(CurveActions, DefaultKnotGoesInTheLongestSpan) {
   c.knots = {0, 0, 0, 1, 2, 6, 7, 7, 7};
   EXPECT_DOUBLE_EQ(default_knot_parameter(c), 4.0);
   EXPECT_NEAR(nearest_curve_parameter(c, evaluate(c, 5.5).p), 5.5, 7.0 / 100);
+}
+
+}  // namespace
+}  // namespace pl::test
+
+namespace pl::test {
+namespace {
+
+// A curve picked by its line (the whole curve selected, no point) is what the actions act on,
+// and the right-click menu on a curve's line offers them.
+TEST(CurveActions, ActOnACurveSelectedByItsLine) {
+  Document doc;
+  Selection selection;
+  ActionRegistry r;
+  CurveActionHooks hooks;
+  hooks.say = [](const std::string&) {};
+  add_curve_actions(r, doc, selection, hooks);
+  doc.execute(std::make_unique<AddCurveCommand>(CurveType::BSpline, six_points()));
+  doc.execute(std::make_unique<AddCurveCommand>(CurveType::Bezier, six_points()));
+  EXPECT_EQ(parse_item_name("curve 1"), SelectionItem::curve(1));
+  EXPECT_EQ(describe(SelectionItem::curve(1)), "curve 1");
+  EXPECT_TRUE(item_exists(doc.scene(), SelectionItem::curve(1)));
+  EXPECT_FALSE(item_exists(doc.scene(), SelectionItem::curve(2)));
+  selection.set({SelectionItem::curve(1)});
+  EXPECT_EQ(selected_curve(doc.scene(), selection), 1);
+  const std::vector<const Action*> offered = r.for_context(ContextTarget::Curve);
+  EXPECT_EQ(offered.size(), 4u);
+  ASSERT_TRUE(r.run("curve.elevate"));
+  EXPECT_EQ(curve_degree(doc.scene().curves[1]), 6);
+  EXPECT_EQ(curve_degree(doc.scene().curves[0]), 3);
+  // Its points are the selection's points for framing and the like, and Points of Selection
+  // (offered on the curve's right-click menu) selects them.
+  EXPECT_EQ(points_of(doc.scene(), selection).size(), doc.scene().curves[1].points.size());
+  add_selection_actions(r, doc, selection, hooks.say);
+  const std::vector<const Action*> on_curve = r.for_context(ContextTarget::Curve);
+  EXPECT_NE(std::find_if(on_curve.begin(), on_curve.end(),
+                         [](const Action* a) { return a->id == "select.points_of"; }),
+            on_curve.end());
+  ASSERT_TRUE(r.run("select.points_of"));
+  ASSERT_EQ(selection.size(), doc.scene().curves[1].points.size());
+  EXPECT_EQ(selection.items()[0], SelectionItem::of_point(PointRef::curve_point(1, 0)));
 }
 
 }  // namespace

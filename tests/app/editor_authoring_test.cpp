@@ -119,8 +119,9 @@ TEST_F(AuthoringTools, AddVertexOnASurfaceTakesTheSurfacePoint) {
   const std::vector<SelectionItem> items = surface_items(live.surfaces());
   const SurfaceMesh& m = live.draw().surfaces[1];
   const Vec2 px = pixel_of(m.positions[m.positions.size() / 2]);
-  PickResult pick = picker.pick(
-      {live.draw().surfaces, items, live.draw().network_curves, &live.points()}, camera, kRect, px);
+  PickResult pick = picker.pick({live.draw().surfaces, items, live.draw().network_curves,
+                                 &live.points(), live.draw().free_curves},
+                                camera, kRect, px);
   ASSERT_TRUE(pick.surface);
   const Vec3 on_surface = pick.surface->position;
   AddVertexTool tool;

@@ -11,7 +11,13 @@ into the Save As dialog, Enter).
 
 The checks: the saved file has one bspline curve of 7 points, the dragged point where it was
 dropped; `patchlab analyze --json` of it lists the curve with 7 control points and finite
-length and curvature figures. Every step waits for the state the editor reports
+length and curvature figures.
+
+Then the curve by its line: a click on the drawn curve, away from its points, selects the curve
+(not a point); a right-click there offers the curve actions, and Split Curve cuts it where the
+menu was opened. The two pieces meet in a joint that the editor labels G2 with its figures (no
+gap, no tangent angle, no curvature jump: a spline split is C2), and `analyze` of the scene saved
+again reports the same joint. Every step waits for the state the editor reports
 (--debug-state), never for a fixed time.
 
 Usage: editor_curve_e2e.py PATCHLAB WORKDIR (WORKDIR holds cwd/, config/, state/).
@@ -121,6 +127,30 @@ try:
     ed.hold("Return")
     ed.wait_line(r"^saved " + re.escape(saved_path), "the save")
     ed.let_go("Return")
+    first_save = json.load(open(saved_path))
+
+    # The curve by its line: a click on it (no point there) selects the whole curve.
+    s = ed.wait_state(lambda s: s.curves.get(0) is not None, "a pixel on the curve's line")
+    on_line = s.curves[0]
+    check(all(math.dist(on_line, p) > 12 for p in s.curve_points.values() if p),
+          f"the pixel on the line {on_line} is no control point's")
+    ed.click(on_line)
+    ed.wait_line(r"^selection: curve 0$", "the curve selected by its line")
+    shot("curve_by_line")
+    # A right-click on the line: the curve actions; Split Curve cuts it there.
+    ed.click(on_line, button=3)
+    m = ed.wait_line(r"^menu-item Split Curve ([0-9.]+) ([0-9.]+) window", "Split Curve")
+    ed.click((float(m.group(1)), float(m.group(2))))
+    s = ed.wait_state(lambda s: s.count("curves") == 2 and len(s.joints) == 1,
+                      "two curves and their joint")
+    a, b, g, gap, angle, jump = s.joints[0]
+    print(f"joint in the editor: curves {a}/{b} {g} gap {gap} angle {angle} deg jump {jump}")
+    check((a, b) == (0, 1) and g == "G2", f"joint {s.joints[0]}")
+    check(gap < 1e-12 and angle < 1e-9 and jump < 1e-9, f"joint figures {s.joints[0]}")
+    ed.move((5, 5))
+    shot("curve_joint")
+    ed.key("ctrl+s")  # the scene has its path now: saved without a dialog
+    ed.wait_line(r"^saved " + re.escape(saved_path), "the second save")
     ed.quit()
 except Exception:
     if ed.proc.poll() is None:
@@ -128,12 +158,27 @@ except Exception:
     print("\n".join(ed.lines()[-40:]))
     raise
 
-scene = json.load(open(saved_path))
+scene = first_save
 curves = scene.get("curves", [])
 check(len(curves) == 1 and curves[0]["type"] == "bspline", f"curves: {curves}")
 check(len(curves[0]["points"]) == 7, f"{len(curves[0]['points'])} points")
-report = json.loads(subprocess.run([binary, "analyze", saved_path, "--json"], capture_output=True,
-                                   text=True, check=True).stdout)
+
+def analyze(path):
+    return json.loads(subprocess.run([binary, "analyze", path, "--json"], capture_output=True,
+                                     text=True, check=True).stdout)
+
+
+report = analyze(saved_path)
+# The second save: the split pieces and their joint, as the editor labelled it.
+check(len(report["curves"]) == 2 and len(report["joints"]) == 1, f"after the split: {report}")
+joint = report["joints"][0]
+check(joint["curves"] == [0, 1] and joint["gap"] < 1e-12 and joint["tangent_angle_deg"] < 1e-9 and
+      joint["curvature_jump"] < 1e-9, f"analyze joint {joint}")
+check(sum(c["control_points"] for c in report["curves"]) >= 7, f"pieces {report['curves']}")
+first_path = os.path.join(work, "curve-first.json")
+with open(first_path, "w") as f:
+    json.dump(first_save, f)
+report = analyze(first_path)
 c = report["curves"][0]
 print(json.dumps(c))
 check(c["control_points"] == 7 and c["nonfinite_samples"] == 0, f"analyze: {c}")

@@ -22,19 +22,6 @@ def xdo(*args):
     subprocess.run(["xdotool", *[str(a) for a in args]], check=True)
 
 
-def check(condition, message):
-    if not condition:
-        raise EditorError("FAIL: " + message)
-
-
-def shot(name):
-    """With E2E_SHOTS=DIR, a screenshot of the screen as it is now (for looking at the steps)."""
-    if os.environ.get("E2E_SHOTS"):
-        time.sleep(0.5)  # a frame or two for the hover; only pictures depend on it
-        subprocess.run(["import", "-window", "root", os.path.join(os.environ["E2E_SHOTS"],
-                                                                   name + ".png")], check=True)
-
-
 class State:
     """One state report: counts, tool and the window pixels of everything clickable."""
 
@@ -45,6 +32,8 @@ class State:
         self.fields["tool"] = tool
         self.revision = int(self.fields["revision"])
         self.vertices, self.edges, self.faces, self.knobs = {}, {}, {}, {}
+        self.curves = {}  # free curve -> a pixel on its line that picks it
+        self.joints = []  # (curve, curve, "G0" | "G1" | "G2", gap, angle in degrees, jump)
         self.curve_points = {}  # (curve, point) -> pixel
         self.free_points = {}  # (face, "centre" or "S,J,K") -> pixel of a GB face's free point
         for line in lines[1:]:
@@ -54,14 +43,17 @@ class State:
                 self.origin = nums[0:2]
                 self.axes = [nums[2:4], nums[4:6], nums[6:8]]
                 self.window = (int(w[10]), int(w[11]))
-            elif w[0] in ("vertex", "edge", "face", "knob"):
+            elif w[0] in ("vertex", "edge", "face", "knob", "curve"):
                 where = None if w[2] == "hidden" else (float(w[2]), float(w[3]))
                 table = {"vertex": self.vertices, "edge": self.edges, "face": self.faces,
-                         "knob": self.knobs}[w[0]]
+                         "knob": self.knobs, "curve": self.curves}[w[0]]
                 table[int(w[1])] = where
             elif w[0] == "free-point":
                 self.free_points[(int(w[1]), w[2])] = (
                     None if w[3] == "hidden" else (float(w[3]), float(w[4])))
+            elif w[0] == "joint":
+                self.joints.append((int(w[1]), int(w[2]), w[3], float(w[5]), float(w[7]),
+                                    float(w[9])))
             elif w[0] == "curve-point":
                 self.curve_points[(int(w[1]), int(w[2]))] = (
                     None if w[3] == "hidden" else (float(w[3]), float(w[4])))

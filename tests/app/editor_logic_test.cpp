@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "app/cli/draw_scene_builder.hpp"
+#include "app/cli/load_input.hpp"
 #include "app/editor/logic/editor_invocation.hpp"
 #include "app/editor/logic/editor_paths.hpp"
 #include "app/editor/logic/file_listing.hpp"
@@ -221,6 +222,76 @@ void expect_same_curves(const LiveCurves& a, const LiveCurves& b) {
     EXPECT_EQ(ca[c]->teeth, cb[c]->teeth) << c;
     EXPECT_EQ(ca[c]->tooth_stride, cb[c]->tooth_stride) << c;
   }
+}
+
+// Free curves get combs in the editor like network edges: one per span, equal to the CLI's
+// (free_curve_combs), none without combs; a moved point resamples its own curve only.
+TEST(EditorLiveCurves, FreeCurvesHaveCombsAndAnEditResamplesItsCurveOnly) {
+  Scene s = load_input(std::filesystem::path(PATCHLAB_SOURCE_DIR) / "assets" / "curves" /
+                       "bspline-knot-multiplicity.json");
+  ASSERT_GE(s.curves.size(), 2u);
+  LiveSurfaces live(s, 8, std::nullopt, "curves", 0);
+  LiveCurves curves(false, 12);
+  curves.follow(s, live.surfaces(), 0, 0, {});
+  EXPECT_TRUE(curves.free_curve_combs().empty());
+  EXPECT_TRUE(curves.free_comb_refs().empty());
+  curves.configure(true, 12);
+  curves.follow(s, live.surfaces(), 0, 0, {});
+  ASSERT_EQ(curves.free_curve_combs().size(), s.curves.size());
+  EXPECT_EQ(curves.last_free_curves_resampled(), s.curves.size());
+  std::size_t total = 0;
+  for (std::size_t c = 0; c < s.curves.size(); ++c) {
+    const std::vector<CurvatureComb> expected = free_curve_combs(s.curves[c], 12);
+    ASSERT_EQ(curves.free_curve_combs()[c].size(), curve_spans(s.curves[c]).size());
+    ASSERT_EQ(curves.free_curve_combs()[c].size(), expected.size());
+    for (std::size_t k = 0; k < expected.size(); ++k) {
+      EXPECT_EQ(curves.free_curve_combs()[c][k].points, expected[k].points);
+      EXPECT_EQ(curves.free_curve_combs()[c][k].teeth, expected[k].teeth);
+      EXPECT_FALSE(expected[k].teeth.empty());
+    }
+    total += expected.size();
+  }
+  EXPECT_EQ(curves.free_comb_refs().size(), total);
+
+  set_point_position(s, PointRef::curve_point(1, 2), s.curves[1].points[2] + Vec3(0, 0.3, 0.1));
+  live.sync(s, 1);
+  EXPECT_TRUE(curves.follow(s, live.surfaces(), 0, 1, {}));
+  EXPECT_EQ(curves.last_free_curves_resampled(), 1u);
+  const std::vector<CurvatureComb> moved = free_curve_combs(s.curves[1], 12);
+  for (std::size_t k = 0; k < moved.size(); ++k)
+    EXPECT_EQ(curves.free_curve_combs()[1][k].teeth, moved[k].teeth);
+
+  // A point of a long B-spline: the comb is resampled on the p + 1 spans the point moves only,
+  // and equals the whole curve's comb sampled afresh.
+  SceneCurve long_curve;
+  long_curve.type = CurveType::BSpline;
+  long_curve.degree = 3;
+  for (int i = 0; i < 1000; ++i) long_curve.points.push_back({0.01 * i, std::sin(0.05 * i), 0});
+  for (int i = 0; i < 1004; ++i) long_curve.knots.push_back(std::clamp(i - 3, 0, 997));
+  s.curves.push_back(long_curve);
+  live.sync(s, 2);
+  curves.follow(s, live.surfaces(), 1, 2, {});
+  std::size_t all_spans = 0;  // a curve added: every curve resampled
+  for (const SceneCurve& c : s.curves) all_spans += curve_spans(c).size();
+  EXPECT_EQ(all_spans, total + 997);
+  EXPECT_EQ(curves.last_free_spans_resampled(), all_spans);
+  set_point_position(s, PointRef::curve_point(int(s.curves.size()) - 1, 500),
+                     s.curves.back().points[500] + Vec3(0, 0.2, 0.1));
+  live.sync(s, 3);
+  curves.follow(s, live.surfaces(), 2, 3, {});
+  EXPECT_EQ(curves.last_free_curves_resampled(), 1u);
+  EXPECT_EQ(curves.last_free_spans_resampled(), 4u);
+  const std::vector<CurvatureComb> fresh = free_curve_combs(s.curves.back(), 12);
+  ASSERT_EQ(curves.free_curve_combs().back().size(), fresh.size());
+  for (std::size_t k = 0; k < fresh.size(); ++k) {
+    EXPECT_EQ(curves.free_curve_combs().back()[k].points, fresh[k].points) << k;
+    EXPECT_EQ(curves.free_curve_combs().back()[k].teeth, fresh[k].teeth) << k;
+  }
+
+  // Combs off again: none kept.
+  curves.configure(false, 12);
+  curves.follow(s, live.surfaces(), 3, 3, {});
+  EXPECT_TRUE(curves.free_curve_combs().empty());
 }
 
 TEST(EditorLiveCurves, FollowIncrementalSyncsAndResampleWithoutReevaluating) {

@@ -26,7 +26,8 @@ Camera framing(const DrawScene& d, ViewPreset preset = ViewPreset::Iso) {
 
 PickScene pick_scene(const LiveSurfaces& live, std::vector<SelectionItem>& items) {
   items = surface_items(live.surfaces());
-  return {live.draw().surfaces, items, live.draw().network_curves, &live.points()};
+  return {live.draw().surfaces, items, live.draw().network_curves, &live.points(),
+          live.draw().free_curves};
 }
 
 // Same answer as testing every triangle: the same distance, and the same triangle unless two
@@ -177,6 +178,60 @@ TEST(EditorPicking, FindsAPixelThatSelectsAFaceOrEdge) {
   }
   EXPECT_FALSE(find_pixel_for(picker, scene, c, kRect, SelectionItem::face(7)));
   EXPECT_FALSE(find_pixel_for(picker, scene, c, kRect, SelectionItem::edge(70)));
+}
+
+// A free curve is picked by its drawn line: a click near it selects the curve (not a point),
+// with the point of the line under the cursor, from which the curve actions take their
+// parameter; its points still win where they are; a network edge nearer the cursor wins.
+TEST(EditorPicking, AFreeCurveIsPickedByItsLine) {
+  Scene s = load_input(std::filesystem::path(PATCHLAB_SOURCE_DIR) / "assets" / "curves" /
+                       "bspline-knot-multiplicity.json");
+  ASSERT_GE(s.curves.size(), 2u);
+  const LiveSurfaces live(s, 8, std::nullopt, "curves");
+  std::vector<SelectionItem> items;
+  const PickScene scene = pick_scene(live, items);
+  ASSERT_EQ(scene.free_curves.size(), s.curves.size());
+  const Camera c = framing(live.draw(), ViewPreset::Top);
+  ScenePicker picker;
+  std::size_t picked = 0;
+  for (std::size_t k = 0; k < s.curves.size(); ++k) {
+    const SceneCurve& curve = s.curves[k];
+    // A parameter in the middle of a span, away from the control points on screen.
+    const auto spans = curve_spans(curve);
+    const double t = 0.5 * (spans[spans.size() / 2].first + spans[spans.size() / 2].second);
+    const Vec3 on = evaluate(curve, t).p;
+    const Vec2 px = *project_to_window(c, kRect, on);
+    bool near_point = false;
+    for (const Vec3& q : curve.points)
+      near_point |= glm::length(*project_to_window(c, kRect, q) - px) < 12;
+    if (near_point) continue;
+    const PickResult r = picker.pick(scene, c, kRect, px + Vec2(0, 3));
+    ASSERT_TRUE(r.item) << k;
+    EXPECT_EQ(*r.item, SelectionItem::curve(int(k)));
+    EXPECT_EQ(r.curve, int(k));
+    EXPECT_EQ(r.point, -1);
+    // The picked point lies on the drawn line, within a few pixels of the cursor: the parameter
+    // nearest to it is t (to the sampling of the search).
+    EXPECT_LT(glm::length(*project_to_window(c, kRect, r.curve_point) - px), 4.0);
+    // Far off: not the curve.
+    EXPECT_NE(picker.pick(scene, c, kRect, px + Vec2(0, 60)).curve, int(k));
+    // find_pixel_for finds a pixel that selects it, as scripts use it.
+    const auto found = find_pixel_for(picker, scene, c, kRect, SelectionItem::curve(int(k)));
+    ASSERT_TRUE(found) << k;
+    EXPECT_EQ(picker.pick(scene, c, kRect, *found).item, SelectionItem::curve(int(k)));
+    ++picked;
+  }
+  EXPECT_EQ(picked, s.curves.size());  // no curve skipped for a point near its middle
+  // Curve points are of their own kind (drawn and named as curve points, not boundary ones).
+  const int first = live.points().find(PointRef::curve_point(0, 0));
+  ASSERT_GE(first, 0);
+  EXPECT_EQ(live.points().kinds[first], ControlPointKind::Curve);
+  // On a control point the point wins.
+  const Vec2 p0 = *project_to_window(c, kRect, s.curves[0].points[0]);
+  const PickResult r = picker.pick(scene, c, kRect, p0);
+  ASSERT_TRUE(r.item);
+  EXPECT_EQ(*r.item, SelectionItem::of_point(PointRef::curve_point(0, 0)));
+  EXPECT_FALSE(find_pixel_for(picker, scene, c, kRect, SelectionItem::curve(70)));
 }
 
 TEST(EditorPicking, CurvesBehindASurfaceAreNotPicked) {

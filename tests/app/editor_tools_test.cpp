@@ -29,7 +29,8 @@ struct ToolFixture : ::testing::Test {
 
   // The event at `pixel` with the pick there, as the editor builds it each frame.
   PointerEvent at(const Vec2& pixel, bool shift = false, bool ctrl = false, bool alt = false) {
-    under = picker.pick({live.draw().surfaces, items, live.draw().network_curves, &live.points()},
+    under = picker.pick({live.draw().surfaces, items, live.draw().network_curves, &live.points(),
+                         live.draw().free_curves},
                         camera, kRect, pixel);
     PointerEvent e;
     e.pixel = pixel;

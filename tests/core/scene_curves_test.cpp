@@ -237,6 +237,14 @@ TEST(SceneCurves, JointOfAG1PairThatIsNotG2) {
   // from the end tangent, a the length of the end leg), both centres on the +y side here:
   // 2/3 * 0.2 / 0.4^2 for the first curve's end, 2/3 * 0.6 / 0.5^2 for the second's start.
   EXPECT_NEAR(joints[0].curvature_jump, 2.0 / 3.0 * (0.6 / 0.25 - 0.2 / 0.16), 1e-12);
+  // The curvatures on both sides, and the class the editor shows: G1.
+  EXPECT_NEAR(joints[0].curvature[0], 2.0 / 3.0 * 0.2 / 0.16, 1e-12);
+  EXPECT_NEAR(joints[0].curvature[1], 2.0 / 3.0 * 0.6 / 0.25, 1e-12);
+  EXPECT_EQ(joints[0].at_start, (std::array<bool, 2>{false, true}));
+  EXPECT_EQ(joints[0].position, Vec3(1, 0, 0));
+  EXPECT_EQ(joint_continuity(joints[0], curves_size(curves)), 1);
+  // The box of the control points: (0, 0, 0) to (2, 1, 0).
+  EXPECT_NEAR(curves_size(curves), std::sqrt(5.0), 1e-15);
 }
 
 TEST(SceneCurves, JointOfAG2Pair) {
@@ -252,6 +260,7 @@ TEST(SceneCurves, JointOfAG2Pair) {
     EXPECT_LT(joints[0].gap, 1e-12);
     EXPECT_LT(joints[0].tangent_angle_deg, 1e-9);
     EXPECT_LT(joints[0].curvature_jump, 1e-9);
+    EXPECT_EQ(joint_continuity(joints[0], curves_size(curves)), 2);
   }
 }
 

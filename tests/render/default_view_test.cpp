@@ -91,5 +91,49 @@ TEST(DefaultView, APatchFacingAwayIsSeenFromTheFrontAndFillsTheFrame) {
   EXPECT_GT(seen.covered, 0.3);
 }
 
+// With combs drawn, the default view frames their tips too (a comb stands out of the curve by
+// up to kCombCap reference lengths, and the tight framing on the curve alone cut it off).
+TEST(DefaultView, FramesTheCombTipsWhenCombsAreDrawn) {
+  // A flat cubic whose curvature peaks near its ends: long teeth where the frame is tight.
+  const BezierCurve curve({{0, 0, 0}, {0.1, 1.0, 0}, {2.9, 1.0, 0}, {3, 0, 0}});
+  DrawScene d;
+  Polyline line;
+  for (int i = 0; i <= 64; ++i) line.push_back(curve.point(i / 64.0));
+  d.free_curves.push_back(line);
+  d.free_curve_combs.push_back(curvature_comb(curve, 32));
+  const DrawScene* scenes[] = {&d};
+  DisplaySettings settings = parse_display_mode("shaded+combs");
+  std::vector<Vec3> tips;
+  append_comb_tips(d, settings, tips);
+  ASSERT_EQ(tips.size(), d.free_curve_combs[0].points.size());
+  const double aspect = 4.0 / 3.0;
+  auto outside = [&](const Camera& c) {
+    const glm::dmat4 m = c.projection(aspect) * c.view();
+    int out = 0;
+    for (const Vec3& p : tips) {
+      const glm::dvec4 q = m * glm::dvec4(p, 1.0);
+      out += std::abs(q.x / q.w) > 1.0 || std::abs(q.y / q.w) > 1.0;
+    }
+    return out;
+  };
+  EXPECT_EQ(outside(default_camera(scenes, aspect, &settings)), 0);
+  std::printf("comb tips outside the frame: %d of %zu without the combs' framing, 0 with it\n",
+              outside(default_camera(scenes, aspect)), tips.size());
+  // The tips are where the renderer draws them: point + scale * tooth, within the cap.
+  const double scale =
+      automatic_comb_scale(d.free_curve_combs, glm::length(d.bounds().hi - d.bounds().lo));
+  const CurvatureComb& comb = d.free_curve_combs[0];
+  const double cap = kCombCap * kDefaultCombFraction * glm::length(d.bounds().hi - d.bounds().lo);
+  for (std::size_t i = 0; i < tips.size(); ++i) {
+    const double len = glm::length(tips[i] - comb.points[i]);
+    EXPECT_NEAR(len, std::min(cap, scale * glm::length(comb.teeth[i])), 1e-12) << i;
+  }
+  // Without combs shown, no tips are framed.
+  const DisplaySettings shaded = parse_display_mode("shaded");
+  EXPECT_EQ(framing_points(scenes, nullptr).size(), framing_points(scenes, &shaded).size());
+  EXPECT_EQ(framing_points(scenes, &settings).size(),
+            framing_points(scenes, &shaded).size() + tips.size());
+}
+
 }  // namespace
 }  // namespace pl

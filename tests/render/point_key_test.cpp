@@ -25,7 +25,12 @@ TEST(PointKey, RowsFollowTheEntries) {
   EXPECT_EQ(k.rows[0].label, "boundary");
   EXPECT_EQ(k.rows[1].label, "twin, derived");
   EXPECT_EQ(k.rows[2].label, "twist");
-  EXPECT_EQ(point_key_layout(PointKeyEntries::all(), 1, 1).rows.size(), 11u);
+  // Six kinds editable, four derived (curve points and a GB face's free points are never
+  // derived), two arrows.
+  EXPECT_EQ(point_key_layout(PointKeyEntries::all(), 1, 1).rows.size(), 12u);
+  const auto rows = point_key_layout(PointKeyEntries::all(), 1, 1).rows;
+  EXPECT_EQ(rows[4].label, "curve");
+  EXPECT_EQ(rows[4].kind, int(ControlPointKind::Curve));
   // Sizes follow the text scale.
   const PointKeyLayout big = point_key_layout(e, 3, 1);
   EXPECT_GT(big.width, 2 * k.width);

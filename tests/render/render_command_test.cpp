@@ -132,5 +132,46 @@ TEST(RenderCommand, CombsAddTealTeethOnNetworkCurvesAndBorders) {
   EXPECT_GT(render(kSaddle, "shaded+borders+combs"), 200);  // explicit patch: borders
 }
 
+// Teal (comb) pixels within `margin` pixels of the image's edge.
+int teal_pixels_at_the_edge(const std::filesystem::path& png, int margin) {
+  int w = 0, h = 0, n = 0;
+  stbi_uc* p = stbi_load(png.string().c_str(), &w, &h, &n, 4);
+  EXPECT_NE(p, nullptr) << png;
+  if (!p) return -1;
+  int count = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (x >= margin && y >= margin && x < w - margin && y < h - margin) continue;
+      const stbi_uc* q = p + 4 * (y * w + x);
+      if (q[1] > q[0] + 60 && q[1] >= q[2]) ++count;
+    }
+  stbi_image_free(p);
+  return count;
+}
+
+// The combs of free curves stand out of them by up to three reference lengths; the default
+// view and the preset views frame their tips, so no comb runs into the picture's edge (the
+// hyperbola's comb of the conics did, and the top B-spline's comb in the top view).
+TEST(RenderCommand, CombsOfFreeCurvesAreNotCutByTheFrame) {
+  std::string why;
+  if (!have_gl(why)) GTEST_SKIP() << "no OpenGL: " << why;
+  TempDir dir;
+  const std::string curves = std::string(PATCHLAB_SOURCE_DIR) + "/assets/curves/";
+  for (const auto& [file, view] :
+       std::vector<std::pair<std::string, std::string>>{{"nurbs-circle-and-conics.json", ""},
+                                                        {"bspline-knot-multiplicity.json", ""},
+                                                        {"bspline-knot-multiplicity.json", "top"},
+                                                        {"joints-g0-g1-g2.json", "top"}}) {
+    const auto out = dir / "out.png";
+    std::vector<std::string> args{"render", curves + file, "-o",     out.string(),
+                                  "--size", "400x260",     "--mode", "combs"};
+    if (!view.empty()) args.insert(args.end(), {"--view", view});
+    const CliResult r = cli(args);
+    ASSERT_EQ(r.code, kExitOk) << r.err;
+    EXPECT_GT(teal_pixels(out), 1000) << file << " " << view;
+    EXPECT_EQ(teal_pixels_at_the_edge(out, 3), 0) << file << " " << view;
+  }
+}
+
 }  // namespace
 }  // namespace pl::test

@@ -91,7 +91,7 @@ std::string to_string(const KeyChord& chord);
 std::optional<KeyChord> parse_chord(const std::string& text);
 
 // What the right-click menu was opened on: the kind of object under the cursor.
-enum class ContextTarget { Empty, Point, Edge, Face, Patch };
+enum class ContextTarget { Empty, Point, Edge, Face, Patch, Curve };
 
 // Bit set of ContextTargets an action is offered on.
 using ContextSet = unsigned;

@@ -9,10 +9,12 @@
 namespace pl {
 
 std::optional<int> selected_curve(const Scene& scene, const Selection& selection) {
-  for (const SelectionItem& i : selection.items())
+  for (const SelectionItem& i : selection.items()) {
+    if (i.kind == SelectionItem::Kind::Curve && item_exists(scene, i)) return i.index;
     if (i.kind == SelectionItem::Kind::Point && i.point.kind == PointRef::Kind::CurvePoint &&
         point_exists(scene, i.point))
       return i.point.object;
+  }
   return std::nullopt;
 }
 
@@ -64,7 +66,8 @@ void add_curve_actions(ActionRegistry& r, Document& doc, Selection& selection,
           const double t = e.at_parameter ? parameter(*c) : 0.0;
           run_command(doc, hooks.say, std::make_shared<CurveOperationCommand>(*c, e.op, t));
         });
-    a.context = context_bit(ContextTarget::Point) | context_bit(ContextTarget::Empty);
+    a.context = context_bit(ContextTarget::Point) | context_bit(ContextTarget::Curve) |
+                context_bit(ContextTarget::Empty);
     a.enabled = [&doc, &selection] { return selected_curve(doc.scene(), selection).has_value(); };
     r.add(std::move(a));
   }

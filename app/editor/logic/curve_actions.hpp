@@ -1,4 +1,5 @@
-// The actions on the selected free curve (the curve of a selected curve point), as actions of the
+// The actions on the selected free curve (picked by its line, or the curve of a selected curve
+// point), as actions of the
 // editor's table (menu bar Curve, right-click menu on a point, F1): insert a knot (at the curve
 // parameter nearest where the right-click menu was opened, else in the middle of the longest
 // span), elevate the degree, split (same parameter), reverse. Each is one Document command; a
@@ -16,7 +17,7 @@
 
 namespace pl {
 
-// The curve whose point is selected first, if any.
+// The first selected curve (picked whole or by one of its points), if any.
 std::optional<int> selected_curve(const Scene& scene, const Selection& selection);
 // The parameter of the curve sample nearest to `at` (in space).
 double nearest_curve_parameter(const SceneCurve& curve, const Vec3& at);

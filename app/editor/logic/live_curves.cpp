@@ -5,6 +5,7 @@
 #include <string>
 
 #include "app/cli/draw_scene_builder.hpp"
+#include "app/editor/logic/curve_edits.hpp"
 
 namespace pl {
 
@@ -63,6 +64,9 @@ bool LiveCurves::follow(const Scene& scene, const SceneSurfaces& surfaces, uint6
     return pl::surface_borders(s, teeth);
   };
   if (!stale_ && revision_ == to) return false;  // e.g. the fine view catching up after a drag
+  last_free_resampled_ = last_free_spans_resampled_ = 0;
+  if (stale_) combed_curves_.clear();
+  follow_free_curves(scene.curves);
   if (stale_ || revision_ != from || borders_.size() != n) {
     borders_.clear();
     on_network_.clear();
@@ -80,6 +84,55 @@ bool LiveCurves::follow(const Scene& scene, const SceneSurfaces& surfaces, uint6
   revision_ = to;
   ++serial_;
   return true;
+}
+
+bool LiveCurves::follow_free_curves(const std::vector<SceneCurve>& curves) {
+  if (!combs_) {
+    const bool had = !free_combs_.empty();
+    free_combs_.clear();
+    combed_curves_.clear();
+    return had;
+  }
+  // By index: an inserted or removed curve resamples the curves after it (a rare edit).
+  if (combed_curves_.size() != curves.size()) {
+    combed_curves_.resize(curves.size());
+    free_combs_.resize(curves.size());
+    for (std::size_t c = 0; c < curves.size(); ++c) combed_curves_[c].points.clear();
+  }
+  bool changed = false;
+  for (std::size_t c = 0; c < curves.size(); ++c) {
+    const SceneCurve& curve = curves[c];
+    SceneCurve& combed = combed_curves_[c];
+    if (!combed.points.empty() && same_but_points(combed, curve)) {
+      // Only points moved: the combs of the spans they touch (p + 1 of a spline's), not the
+      // curve's (a drag on a 1,000-point B-spline resamples 4 spans, not 997).
+      const auto range = moved_range(combed, curve);
+      if (!range) continue;
+      combed.points = curve.points;
+      const auto spans = curve_spans(curve);
+      for (std::size_t k = 0; k < spans.size() && k < free_combs_[c].size(); ++k)
+        if (spans[k].first < range->second && spans[k].second > range->first) {
+          free_combs_[c][k] = free_curve_span_comb(curve, spans[k], teeth_);
+          ++last_free_spans_resampled_;
+        }
+      ++last_free_resampled_;
+      changed = true;
+      continue;
+    }
+    combed = curve;
+    free_combs_[c] = pl::free_curve_combs(curve, teeth_);
+    last_free_spans_resampled_ += free_combs_[c].size();
+    ++last_free_resampled_;
+    changed = true;
+  }
+  return changed;
+}
+
+std::vector<const CurvatureComb*> LiveCurves::free_comb_refs() const {
+  std::vector<const CurvatureComb*> refs;
+  for (const auto& curve : free_combs_)
+    for (const CurvatureComb& c : curve) refs.push_back(&c);
+  return refs;
 }
 
 std::vector<const CurvatureComb*> LiveCurves::network_comb_refs() const {

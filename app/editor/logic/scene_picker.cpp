@@ -135,40 +135,50 @@ PickResult ScenePicker::pick(const PickScene& scene, const Camera& camera, const
     }
   }
 
-  if (options.curves) {
-    double best = options.curve_radius_px;
-    for (std::size_t e = 0; e < scene.curves.size(); ++e) {
-      const Polyline& line = scene.curves[e];
-      if (line.size() < 2) continue;
-      // Cull: the ray must pass within the pick radius (in world size at the far side of the
-      // curve's box) of the box.
-      Box box = bounds_of(line);
-      const double far = glm::dot(box.centre() - eye, forward) + box.radius();
-      const double margin = options.curve_radius_px * world_per_px(std::max(far, 0.0));
-      box.lo -= Vec3(margin);
-      box.hi += Vec3(margin);
-      if (!intersect_box(ray, box, kInfinity)) continue;
-      std::optional<Vec2> a = project(line[0]);
-      for (std::size_t k = 1; k < line.size(); ++k) {
-        const std::optional<Vec2> b = project(line[k]);
-        if (a && b) {
-          const auto [d, s] = segment_distance(pixel, *a, *b);
-          if (d < best) {
-            const Vec3 p = line[k - 1] + s * (line[k] - line[k - 1]);
-            const double depth = glm::dot(p - ray.origin, ray.direction);
-            const double slack = kCurveDepthSlackPx * world_per_px(glm::dot(p - eye, forward));
-            if (depth <= surface_t + slack) {
-              best = d;
-              r.edge = static_cast<int>(e);
-              r.edge_t = (double(k - 1) + s) / double(line.size() - 1);
-            }
+  // The nearest line within the radius, network edges (when shown) and free curves alike.
+  double best = options.curve_radius_px;
+  auto offer_line = [&](const Polyline& line, auto&& take) {
+    if (line.size() < 2) return;
+    // Cull: the ray must pass within the pick radius (in world size at the far side of the
+    // curve's box) of the box.
+    Box box = bounds_of(line);
+    const double far = glm::dot(box.centre() - eye, forward) + box.radius();
+    const double margin = options.curve_radius_px * world_per_px(std::max(far, 0.0));
+    box.lo -= Vec3(margin);
+    box.hi += Vec3(margin);
+    if (!intersect_box(ray, box, kInfinity)) return;
+    std::optional<Vec2> a = project(line[0]);
+    for (std::size_t k = 1; k < line.size(); ++k) {
+      const std::optional<Vec2> b = project(line[k]);
+      if (a && b) {
+        const auto [d, s] = segment_distance(pixel, *a, *b);
+        if (d < best) {
+          const Vec3 p = line[k - 1] + s * (line[k] - line[k - 1]);
+          const double depth = glm::dot(p - ray.origin, ray.direction);
+          const double slack = kCurveDepthSlackPx * world_per_px(glm::dot(p - eye, forward));
+          if (depth <= surface_t + slack) {
+            best = d;
+            take((double(k - 1) + s) / double(line.size() - 1), p);
           }
         }
-        a = b;
       }
+      a = b;
     }
-  }
+  };
+  if (options.curves)
+    for (std::size_t e = 0; e < scene.curves.size(); ++e)
+      offer_line(scene.curves[e], [&](double t, const Vec3&) {
+        r.edge = static_cast<int>(e);
+        r.edge_t = t;
+      });
+  for (std::size_t c = 0; c < scene.free_curves.size(); ++c)
+    offer_line(scene.free_curves[c], [&](double, const Vec3& p) {
+      r.edge = -1;  // nearer than every edge offered before
+      r.curve = static_cast<int>(c);
+      r.curve_point = p;
+    });
 
+  if (!r.item && r.curve >= 0) r.item = SelectionItem::curve(r.curve);
   if (!r.item && r.edge >= 0) r.item = SelectionItem::edge(r.edge);
   if (!r.item && r.surface && r.surface->surface < int(scene.surface_items.size()))
     r.item = scene.surface_items[r.surface->surface];
@@ -180,9 +190,10 @@ std::optional<Vec2> find_pixel_for(ScenePicker& picker, const PickScene& scene,
                                    const SelectionItem& item, const PickOptions& options) {
   // Candidate points: the curve's samples, or the centres of the surfaces' triangles.
   std::vector<Vec3> candidates;
-  if (item.kind == SelectionItem::Kind::Edge) {
-    if (item.index < 0 || item.index >= int(scene.curves.size())) return std::nullopt;
-    const Polyline& line = scene.curves[item.index];
+  if (item.kind == SelectionItem::Kind::Edge || item.kind == SelectionItem::Kind::Curve) {
+    const auto lines = item.kind == SelectionItem::Kind::Edge ? scene.curves : scene.free_curves;
+    if (item.index < 0 || item.index >= int(lines.size())) return std::nullopt;
+    const Polyline& line = lines[item.index];
     for (std::size_t k = 1; k + 1 < line.size(); ++k) candidates.push_back(line[k]);
   } else {
     for (std::size_t s = 0; s < scene.meshes.size() && s < scene.surface_items.size(); ++s) {

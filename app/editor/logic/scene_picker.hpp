@@ -1,9 +1,9 @@
 // What lies under the cursor in a view: a control point (drawn over everything, so picked
 // within a pixel radius whatever its depth; editable points before derived ones, and those in
-// front of the surface under the cursor before those behind it), else a
-// network curve (within a pixel radius and not hidden behind a surface), else the nearest
+// front of the surface under the cursor before those behind it), else the nearest network curve
+// or free curve (within a pixel radius and not hidden behind a surface), else the nearest
 // surface along the ray. A click selects the first of these that is selectable: the point, the
-// curve's edge, or the surface's face (or explicit patch).
+// curve's edge or the free curve, or the surface's face (or explicit patch).
 //
 // Surfaces are cast against exactly the triangles drawn, through two levels of bounding
 // volumes: every surface's box (kept per mesh revision, so an edit re-boxes only the surfaces it
@@ -31,6 +31,7 @@ struct PickScene {
   std::span<const SelectionItem> surface_items;  // per mesh: its face or explicit patch
   std::span<const Polyline> curves;              // per network edge (empty: no network)
   const ScenePoints* points = nullptr;           // null: no points
+  std::span<const Polyline> free_curves;         // per scene curve (always shown)
 };
 
 // Per surface of an evaluation: the face it fills, or the explicit patch it draws.
@@ -57,6 +58,8 @@ struct PickResult {
   // Where on that edge: its curve parameter (the polylines sample the curve at even steps of t,
   // so this is exact at the samples and linear between them).
   double edge_t = 0;
+  int curve = -1;         // free curve under the cursor (nearer than any edge), -1 if none
+  Vec3 curve_point{0.0};  // the point of its drawn line nearest the cursor
   std::optional<SurfaceHit> surface;  // nearest surface along the ray
 };
 
@@ -89,10 +92,10 @@ class ScenePicker {
   std::vector<Entry> cache_;
 };
 
-// A window pixel where a click selects `item` (a face, patch or edge): over the face's surface
-// or on the edge's curve, with no point under the cursor, nearest to the middle of what is
-// visible of it. nullopt when nothing of it can be clicked in this view. Scripts and the
-// end-to-end test use it to click a face like a user would.
+// A window pixel where a click selects `item` (a face, patch, edge or free curve): over the
+// face's surface or on the edge's (or free curve's) line, with no point under the cursor, nearest
+// to the middle of what is visible of it. nullopt when nothing of it can be clicked in this view.
+// Scripts and the end-to-end test use it to click a face like a user would.
 std::optional<Vec2> find_pixel_for(ScenePicker& picker, const PickScene& scene,
                                    const Camera& camera, const ViewRect& rect,
                                    const SelectionItem& item, const PickOptions& options = {});

@@ -208,7 +208,7 @@ ScenePoints collect_scene_points(const Scene& scene, const SceneSurfaces& surfac
     const SceneCurve& curve = scene.curves[c];
     const auto base = static_cast<uint32_t>(s.positions.size());
     for (std::size_t k = 0; k < curve.points.size(); ++k)
-      add(s, curve.points[k], ControlPointKind::Boundary,
+      add(s, curve.points[k], ControlPointKind::Curve,
           PointRef::curve_point(static_cast<int>(c), static_cast<int>(k)),
           {PointOwner::Kind::Curve, static_cast<int>(c)});
     if (curve.type != CurveType::Hermite)

@@ -17,6 +17,8 @@ bool item_exists(const Scene& scene, const SelectionItem& item) {
       return scene.network && item.index >= 0 && item.index < int(scene.network->faces.size());
     case SelectionItem::Kind::Patch:
       return item.index >= 0 && item.index < int(scene.patches.size());
+    case SelectionItem::Kind::Curve:
+      return item.index >= 0 && item.index < int(scene.curves.size());
   }
   return false;
 }
@@ -31,6 +33,8 @@ std::string describe(const SelectionItem& item) {
       return "face " + std::to_string(item.index);
     case SelectionItem::Kind::Patch:
       return "patch " + std::to_string(item.index);
+    case SelectionItem::Kind::Curve:
+      return "curve " + std::to_string(item.index);
   }
   return "?";
 }
@@ -44,6 +48,7 @@ std::optional<SelectionItem> parse_item_name(const std::string& name) {
   if (word == "edge") return SelectionItem::edge(i);
   if (word == "face") return SelectionItem::face(i);
   if (word == "patch") return SelectionItem::patch(i);
+  if (word == "curve") return SelectionItem::curve(i);
   return std::nullopt;
 }
 

@@ -19,20 +19,21 @@
 namespace pl {
 
 struct SelectionItem {
-  enum class Kind : uint8_t { Point, Edge, Face, Patch };
+  enum class Kind : uint8_t { Point, Edge, Face, Patch, Curve };
   Kind kind = Kind::Point;
   PointRef point;  // Kind::Point
-  int index = -1;  // edge, face or patch index
+  int index = -1;  // edge, face, patch or free-curve index
 
   static SelectionItem of_point(const PointRef& p) { return {Kind::Point, p, -1}; }
   static SelectionItem edge(int e) { return {Kind::Edge, {}, e}; }
   static SelectionItem face(int f) { return {Kind::Face, {}, f}; }
   static SelectionItem patch(int p) { return {Kind::Patch, {}, p}; }
+  static SelectionItem curve(int c) { return {Kind::Curve, {}, c}; }  // a free curve, whole
   bool operator==(const SelectionItem&) const = default;
 };
 
 bool item_exists(const Scene& scene, const SelectionItem& item);
-// "vertex 3", "edge 5 handle 1", "patch 0 point 7", "edge 5", "face 1", "patch 0".
+// "vertex 3", "edge 5 handle 1", "patch 0 point 7", "edge 5", "face 1", "patch 0", "curve 2".
 std::string describe(const SelectionItem& item);
 // The inverse of describe(); nullopt for anything else.
 std::optional<SelectionItem> parse_item_name(const std::string& name);

@@ -101,10 +101,12 @@ void add_selection_actions(ActionRegistry& actions, Document& doc, Selection& se
 
   actions.add(select(
       "select.points_of", "Points of Selection",
-      "select the editable points of the selected faces, edges and patches",
+      "select the editable points of the selected faces, edges, patches and curves",
       context_bit(ContextTarget::Face) | context_bit(ContextTarget::Edge) |
-          context_bit(ContextTarget::Patch),
-      [has] { return has(Kind::Face)() || has(Kind::Edge)() || has(Kind::Patch)(); },
+          context_bit(ContextTarget::Patch) | context_bit(ContextTarget::Curve),
+      [has] {
+        return has(Kind::Face)() || has(Kind::Edge)() || has(Kind::Patch)() || has(Kind::Curve)();
+      },
       [&doc, &selection] {
         std::vector<SelectionItem> items;
         for (const PointRef& p : points_of(doc.scene(), selection))

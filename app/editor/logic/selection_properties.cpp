@@ -173,6 +173,10 @@ std::vector<PointRef> points_of(const Scene& scene, const Selection& selection) 
         for (std::size_t k = 0; k < scene.patches[i.index].patch->size(); ++k)
           add(PointRef::patch_point(i.index, int(k)));
         break;
+      case SelectionItem::Kind::Curve:
+        for (std::size_t k = 0; k < scene.curves[i.index].points.size(); ++k)
+          add(PointRef::curve_point(i.index, int(k)));
+        break;
     }
   }
   return r;
