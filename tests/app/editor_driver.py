@@ -22,6 +22,19 @@ def xdo(*args):
     subprocess.run(["xdotool", *[str(a) for a in args]], check=True)
 
 
+def check(condition, message):
+    if not condition:
+        raise EditorError("FAIL: " + message)
+
+
+def shot(name):
+    """With E2E_SHOTS=DIR, a screenshot of the screen as it is now (for looking at the steps)."""
+    if os.environ.get("E2E_SHOTS"):
+        time.sleep(0.5)  # a frame or two for the hover; only pictures depend on it
+        subprocess.run(["import", "-window", "root", os.path.join(os.environ["E2E_SHOTS"],
+                                                                   name + ".png")], check=True)
+
+
 class State:
     """One state report: counts, tool and the window pixels of everything clickable."""
 
