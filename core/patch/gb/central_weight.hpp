@@ -8,10 +8,10 @@
 // of the face. Here each side i (from a = vertex i-1 to b = vertex i, unit direction e) has
 //   g_i = f^2 + R_a^2 + R_b^2,   f = e x (x - a)            (distance to the side's line),
 //   R_a = (|x - a| - (x - a).e) / 2,   R_b = (|x - b| + (x - b).e) / 2,
-// a smooth stand-in for the squared distance to the segment: R_a and R_b vanish (to fourth order
-// in f) over the segment and grow like the distance past its ends, so g_i is zero exactly on side
-// i, zero with its gradient there (g_i = f^2 + O(f^4)), within a factor of about 2 of the squared
-// distance elsewhere, and C-infinity everywhere but at the two vertices. The weight is the
+// a smooth stand-in for the squared distance d^2 to the segment: R_a^2 and R_b^2 vanish to fourth
+// order in f over the segment and grow like d^2 past its ends, so g_i is zero exactly on side i,
+// zero with its gradient there (g_i = f^2 + O(f^4)), between d^2 and 2.25 d^2 elsewhere, and
+// C-infinity everywhere but at the two vertices. The weight is the
 // product of the sides' saturated distances
 //   w = prod_i g_i / (g_i + c),   c = area / (4 pi)   (half the radius of the disc with the
 //                                                     domain's area, squared),
