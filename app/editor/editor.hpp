@@ -115,6 +115,7 @@ class Editor {
 
   // editor_input.cpp
   void handle_keys();
+  bool takes_shortcuts() const;
   void handle_mouse();
   PointerEvent pointer_event(const ViewRect& rect, const PickResult* under) const;
   std::optional<Vec3> held_axis() const;

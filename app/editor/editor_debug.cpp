@@ -138,7 +138,8 @@ void Editor::report_state() {
   out << "state revision " << doc.revision() << " vertices " << net.vertices.size() << " edges "
       << net.edges.size() << " faces " << net.faces.size() << " curves " << scene.curves.size()
       << " selected " << selection_.size() << " can-undo " << doc.can_undo() << " can-redo "
-      << doc.can_redo() << " tool " << tools_.active().name() << "\n";
+      << doc.can_redo() << " keys " << int(takes_shortcuts()) << " tool " << tools_.active().name()
+      << "\n";
   int wx = 0, wy = 0;
   glfwGetWindowPos(window_.handle(), &wx, &wy);
   out << "view";

@@ -106,9 +106,14 @@ void Editor::escape() {
   }
 }
 
+// A text field or a popup (menu, dialog) owns the keyboard; shortcuts pressed meanwhile are
+// dropped, not kept for later.
+bool Editor::takes_shortcuts() const {
+  return !ImGui::GetIO().WantTextInput && !ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId);
+}
+
 void Editor::handle_keys() {
-  const ImGuiIO& io = ImGui::GetIO();
-  if (io.WantTextInput || ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId)) return;
+  if (!takes_shortcuts()) return;
   for (const auto& [key, mods] : key_presses_) {
     const KeyChord chord = chord_from_glfw(key, mods);
     if (chord.key == Key::None) continue;

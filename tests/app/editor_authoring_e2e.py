@@ -184,15 +184,15 @@ try:
     s = ed.state()
     while int(s.fields["can-undo"]):
         r = s.revision
-        ed.key("ctrl+z")
+        ed.shortcut("ctrl+z")
         s = ed.wait_state(lambda s, r=r: s.revision > r, "an undo")
     check(s.count("vertices") == 0 and s.count("faces") == 0, f"undone to {s.fields}")
     while int(s.fields["can-redo"]):
         r = s.revision
-        ed.key("ctrl+y")
+        ed.shortcut("ctrl+y")
         s = ed.wait_state(lambda s, r=r: s.revision > r, "a redo")
     check(s.count("vertices") == 11 and s.count("faces") == 4, f"redone to {s.fields}")
-    ed.key("ctrl+s")
+    ed.shortcut("ctrl+s")
     ed.wait_line(r"^saved " + re.escape(saved_path), "the second save")
     check(open(saved_path, "rb").read() == first, "undo to empty and redo did not reproduce the "
           "saved file byte for byte")

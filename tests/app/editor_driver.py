@@ -198,6 +198,13 @@ class Editor:
         self._act()
         xdo("key", *keys)
 
+    def shortcut(self, *keys):
+        """A key chord for the editor's commands: waits until no text field or popup holds the
+        keyboard (the editor drops shortcuts pressed meanwhile; a dialog closes a frame after its
+        button), then sends it."""
+        self.wait_state(lambda s: s.fields.get("keys") == "1", "the editor to take shortcuts")
+        self.key(*keys)
+
     def hold(self, key):
         self._act()
         xdo("keydown", key)
