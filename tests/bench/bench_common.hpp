@@ -55,6 +55,7 @@ void bench_interior(const Options& options);
 void bench_engine(const Options& options);
 void bench_catmull_clark(const Options& options);
 void bench_cad(const Options& options);
+void bench_cad_ngon(const Options& options);
 void bench_curve(const Options& options);
 void bench_grains(const Options& options);
 

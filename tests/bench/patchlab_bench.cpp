@@ -1,7 +1,7 @@
 // The benchmark program: prints "figure NAME VALUE UNIT" lines. Run without arguments for real
 // figures (Release build), with --quick for a seconds-long smoke run, with --grains for the sweep
 // that chose the parallel grains, with --only NAME,... for some of the benchmarks (bezier, gb,
-// gb_face, interior, engine, catmull_clark, cad, curve).
+// gb_face, interior, engine, catmull_clark, cad, cad_ngon, curve).
 #include <oneapi/tbb/info.h>
 
 #include <cstring>
@@ -23,7 +23,7 @@ int main(int argc, char** argv) {
       std::fprintf(
           stderr,
           "usage: patchlab_bench [--quick] [--grains] [--only bezier,gb,gb_face,interior,engine,"
-          "catmull_clark,cad,curve]\n");
+          "catmull_clark,cad,cad_ngon,curve]\n");
       return 2;
     }
   }
@@ -44,6 +44,7 @@ int main(int argc, char** argv) {
   run("engine", pl::bench::bench_engine);
   run("catmull_clark", pl::bench::bench_catmull_clark);
   run("cad", pl::bench::bench_cad);
+  run("cad_ngon", pl::bench::bench_cad_ngon);
   run("curve", pl::bench::bench_curve);
   return 0;
 }

@@ -16,6 +16,7 @@
 #include "cad_test_util.hpp"
 #include "core/cad/cad_export.hpp"
 #include "core/cad/occt_io.hpp"
+#include "ngon_scene.hpp"
 
 namespace pl::test {
 namespace {
@@ -41,16 +42,17 @@ struct Worst {
   double exact_rel = 0, fitted_position_over_tol = 0, fitted_normal_deg = 0;
 };
 
-// Exports `file`, reads it back and checks every face; accumulates the worst figures.
-void check_round_trip(const std::filesystem::path& file, CadFormat format, Worst& worst) {
-  SCOPED_TRACE(file.string());
+// Exports `scene` (read from `source`), reads it back and checks every face; accumulates the
+// worst figures.
+void check_round_trip(const Scene& scene, const std::filesystem::path& source, CadFormat format,
+                      Worst& worst) {
+  SCOPED_TRACE(source.string());
   TempDir dir;
   const auto out = dir / (format == CadFormat::Step ? "out.step" : "out.igs");
-  const Scene scene = load_input(file);
   CadExportOptions options;
-  options.source = file.string();
+  options.source = source.string();
   const CadExportReport report = export_cad(scene, out, options);
-  const std::vector<CadPiece> pieces = cad_pieces(scene, std::nullopt, file.string());
+  const std::vector<CadPiece> pieces = cad_pieces(scene, std::nullopt, source.string());
   ASSERT_EQ(pieces.size(), report.faces.size());
 
   const CadFile back = read_cad_file(out, format);
@@ -63,7 +65,7 @@ void check_round_trip(const std::filesystem::path& file, CadFormat format, Worst
     int faces = 0;
     for (TopExp_Explorer e(reader.OneShape(), TopAbs_FACE); e.More(); e.Next()) ++faces;
     EXPECT_EQ(faces, static_cast<int>(pieces.size()));
-    const std::string name = scene.name.empty() ? file.stem().string() : scene.name;
+    const std::string name = scene.name.empty() ? source.stem().string() : scene.name;
     EXPECT_EQ(back.product, name);
   }
   // Faces are matched to pieces by where they are (at the same parameters), then their names
@@ -115,10 +117,10 @@ void round_trip_all(CadFormat format) {
   Worst worst;
   const auto scenes = asset_scenes();
   ASSERT_GE(scenes.size(), 16u);
-  for (const auto& f : scenes) check_round_trip(f, format, worst);
+  for (const auto& f : scenes) check_round_trip(load_input(f), f, format, worst);
   const auto models = reference_models();
   ASSERT_EQ(models.size(), 8u) << "the GB reference models belong in tests/data/gb";
-  for (const auto& f : models) check_round_trip(f, format, worst);
+  for (const auto& f : models) check_round_trip(load_input(f), f, format, worst);
   std::printf(
       "%s round trip: exact faces within %.3g of the size; fitted faces within %.3g of "
       "the tolerance, normals within %.4f deg\n",
@@ -132,6 +134,25 @@ TEST(CadRoundTrip, EveryAssetSceneAndReferenceModelThroughStep) {
 
 TEST(CadRoundTrip, EveryAssetSceneAndReferenceModelThroughIges) {
   round_trip_all(CadFormat::Iges);
+}
+
+// Faces of the sizes users reach: a regular n-gon GB cap (a ring split, a singular corner per
+// side), alone or inside a ring of Gregory quads, exported to STEP and read back.
+void round_trip_ngon(int n, bool ring) {
+  Worst worst;
+  const Scene scene = ngon_cap_scene(n, ring);
+  check_round_trip(scene, scene.name + (ring ? " in a ring of quads" : ""), CadFormat::Step, worst);
+  std::printf("%d-gon%s: fitted faces within %.3g of the tolerance, normals within %.4f deg\n", n,
+              ring ? " in a ring of quads" : "", worst.fitted_position_over_tol,
+              worst.fitted_normal_deg);
+}
+
+TEST(CadRoundTrip, SixteenSidedGBFaceInARingOfQuadsThroughStep) {
+  round_trip_ngon(16, true);
+}
+
+TEST(CadRoundTrip, ThirtyTwoSidedGBFaceThroughStep) {
+  round_trip_ngon(32, false);
 }
 
 }  // namespace

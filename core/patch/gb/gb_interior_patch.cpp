@@ -1,36 +1,14 @@
 #include "core/patch/gb/gb_interior_patch.hpp"
 
-#include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "core/math/scratch.hpp"
 #include "core/patch/gb/default_net.hpp"
 #include "core/patch/gb/ribbon_elevation.hpp"
 
 namespace pl {
 
 namespace {
-
-// prod_i h_i at x (not a domain vertex).
-Jet h_product(const MeanValueParameters& params, Vec2 x) {
-  const int n = params.sides();
-  Scratch<Jet, MeanValueParameters::kMaxSides> lam, h;
-  params.evaluate(x, std::span(lam.data(), n), {}, std::span(h.data(), n));
-  Jet p = h[0];
-  for (int i = 1; i < n; ++i) p = p * h[i];
-  return p;
-}
-
-// Crossing-number test: x strictly inside the simple polygon.
-bool inside(const std::vector<Vec2>& poly, Vec2 x) {
-  bool in = false;
-  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
-    const Vec2 a = poly[i], b = poly[j];
-    if ((a.y > x.y) != (b.y > x.y) && x.x < a.x + (x.y - a.y) / (b.y - a.y) * (b.x - a.x)) in = !in;
-  }
-  return in;
-}
 
 std::vector<Vec3> all_points(const GBRibbonPatch& filling, const std::vector<Vec3>& net,
                              const std::vector<Vec3>& defaults,
@@ -50,26 +28,6 @@ std::vector<std::size_t> free_indices(int n, int d, bool centre) {
   return out;
 }
 
-// 1 / the largest prod_i h_i^2 found at the average of the domain vertices (the centre of the
-// regular n-gon, where it peaks) and at a coarse sample of the domain (a concave domain's average
-// vertex may lie where the product is tiny, or outside), or 0 if that is not a usable number.
-double centre_scale(const GBRibbonPatch& f) {
-  const MeanValueParameters params(f.polygon().vertices());
-  const std::vector<Vec2>& vertices = f.polygon().vertices();
-  const auto at = [&](Vec2 x) {
-    for (const Vec2& v : vertices)
-      if (x == v) return 0.0;
-    const double h = h_product(params, x).f;
-    return h * h;
-  };
-  Vec2 c(0);
-  for (const Vec2& v : vertices) c += v;
-  c /= double(vertices.size());
-  double largest = inside(vertices, c) ? at(c) : 0;
-  for (const Vec2& x : f.polygon().tessellate(8).points) largest = std::max(largest, at(x));
-  return std::isfinite(largest) && largest > 1e-200 ? 1 / largest : 0;
-}
-
 }  // namespace
 
 GBInteriorPatch::GBInteriorPatch(GBRibbonPatch filling, int degree,
@@ -77,15 +35,14 @@ GBInteriorPatch::GBInteriorPatch(GBRibbonPatch filling, int degree,
     : filling_(std::move(filling)),
       d_(degree),
       net_size_(GBPatch::point_count(filling_.sides(), degree)),
-      params_(filling_.polygon().vertices()) {
+      centre_weight_(filling_.polygon()) {
   const int n = filling_.sides(), d = degree;
   if (d < 3) throw std::invalid_argument("a GB face's degree is at least 3");
   if (defaults.size() != net_size_ || net.size() != net_size_)
     throw std::invalid_argument("the degree-" + std::to_string(d) + " net of a " +
                                 std::to_string(n) + "-sided face has " + std::to_string(net_size_) +
                                 " points");
-  scale_ = centre_scale(filling_);
-  centre_ = scale_ > 0;
+  centre_ = centre_weight_.scale() > 0;
   if (!centre_ && net[0] != defaults[0])
     throw std::invalid_argument("the central point's weight vanishes on this face's domain");
   free_ = free_indices(n, d, centre_);
@@ -179,12 +136,7 @@ void GBInteriorPatch::set_control_point(std::size_t k, const Vec3& p) {
 
 Jet GBInteriorPatch::centre_weight(Vec2 x) const {
   if (!centre_) return Jet{};
-  // At a domain vertex two factors vanish linearly: phi_0 and its first and second derivatives
-  // are 0 there (mean value coordinates are not evaluated at vertices).
-  for (const Vec2& v : filling_.polygon().vertices())
-    if (x == v) return Jet{};
-  const Jet p = h_product(params_, x);
-  return (p * p) * scale_;
+  return centre_weight_(x);
 }
 
 Jet GBInteriorPatch::free_blend(std::size_t k, Vec2 x) const {

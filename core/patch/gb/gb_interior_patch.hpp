@@ -12,10 +12,10 @@
 // and a corner-block point named by two ribbons has the sum of both blends. Sides that need more
 // layers than l (behind a reflex corner, gb_ribbon_patch.hpp) carry their rows elevated in h
 // (ribbon_with_layer), so there phi_p is the combination of the elevated rows' blends. C_0 blends
-// with phi_0 = prod_i h_i^2 normalised to 1 at the average of the domain vertices (h_i the mean
-// value local parameters), normalised so that its largest value over the domain is 1 (at the
-// centre of the regular n-gon, the domain of every convex face): zero with its first derivatives
-// on every side.
+// with phi_0, the soft minimum of the domain sides' smoothed squared distances normalised so that
+// its largest value over the domain is 1 (central_weight.hpp): zero with its first derivatives on
+// every side, and peaking well inside the face, near the point farthest from its boundary (the
+// centre of the regular n-gon, the domain of every convex face), also behind reflex corners.
 //
 // Every phi_p vanishes with its first derivatives on the whole boundary (rows 0 and 1 carry no
 // displacement), so the boundary curves and the cross-boundary derivatives are F's at every
@@ -34,7 +34,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/param/mean_value.hpp"
+#include "core/patch/gb/central_weight.hpp"
 #include "core/patch/gb/gb_ribbon_patch.hpp"
 
 namespace pl {
@@ -100,8 +100,7 @@ class GBInteriorPatch final : public PatchType<GBInteriorPatch> {
   std::vector<std::vector<std::pair<std::size_t, double>>> users_;  // [q] -> (free slot, c)
   std::size_t displaced_points_ = 0;  // blend points with a non-zero displacement
   bool centre_ = false;
-  MeanValueParameters params_;
-  double scale_ = 1;  // 1 / the largest prod_i h_i^2 over the domain
+  CentralWeight centre_weight_;  // phi_0
 };
 
 }  // namespace pl
