@@ -121,6 +121,7 @@ void Editor::after_document_replaced() {
   followed_revision_ = UINT64_MAX;
   // --compare applies to the first document; later ones keep the layout the user chose.
   rebuild_views(std::exchange(options_.compare, false) || views_.compare());
+  if (std::exchange(options_.difference, false)) views_.difference = true;
 }
 
 void Editor::rebuild_views(bool compare) {
