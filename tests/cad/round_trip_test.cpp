@@ -151,9 +151,5 @@ TEST(CadRoundTrip, SixteenSidedGBFaceInARingOfQuadsThroughStep) {
   round_trip_ngon(16, true);
 }
 
-TEST(CadRoundTrip, ThirtyTwoSidedGBFaceThroughStep) {
-  round_trip_ngon(32, false);
-}
-
 }  // namespace
 }  // namespace pl::test
