@@ -60,7 +60,7 @@ struct EditorOptions {
   // messages): what the authoring end-to-end test waits for and clicks on.
   bool debug_state = false;
   int width = 1440, height = 900;
-  bool compare = false;                             // start split: Gregory | GB
+  bool compare = false;     // start split: Gregory | GB
   bool difference = false;  // and GB coloured by its distance to Gregory (implies compare)
   std::optional<std::filesystem::path> screenshot;  // write one, then quit (scripts, docs)
 };

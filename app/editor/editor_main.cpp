@@ -72,7 +72,8 @@ int run_editor(std::span<const std::string> args, std::ostream& out, std::ostrea
       }
     } else if (a.rfind("--", 0) == 0) {
       err << "patchlab: unknown editor option " << a << "\n"
-          << "usage: patchlab [FILE] [--size WxH] [--compare] [--difference] [--screenshot OUT.png] "
+          << "usage: patchlab [FILE] [--size WxH] [--compare] [--difference] [--screenshot "
+             "OUT.png] "
              "[--bench-drag [--busy]] [--bench-pick] [--debug-point NAME]... [--debug-state]\n";
       return 2;
     } else if (!o.file) {
