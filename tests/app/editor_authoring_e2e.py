@@ -56,7 +56,7 @@ def check(condition, message):
 
 
 ed = Editor(binary, ["--size", "1200x760"], work, env)
-try:
+with ed:
     ed.wait_state(lambda s: True, "the first state")
     wid = subprocess.run(["xdotool", "search", "--sync", "--pid", str(ed.proc.pid)],
                          capture_output=True, text=True, check=True).stdout.split()[0]
@@ -197,11 +197,6 @@ try:
     check(open(saved_path, "rb").read() == first, "undo to empty and redo did not reproduce the "
           "saved file byte for byte")
     ed.quit()
-except Exception:
-    if ed.proc.poll() is None:
-        ed.proc.kill()
-    print("\n".join(ed.lines()[-40:]))
-    raise
 
 # The saved network: what was built, G1 everywhere, no projected tangent.
 net = json.loads(first)["network"]

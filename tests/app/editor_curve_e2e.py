@@ -55,7 +55,7 @@ def check(condition, message):
 
 
 ed = Editor(binary, ["--size", "1200x760"], work, env)
-try:
+with ed:
     ed.wait_state(lambda s: True, "the first state")
     wid = subprocess.run(["xdotool", "search", "--sync", "--pid", str(ed.proc.pid)],
                          capture_output=True, text=True, check=True).stdout.split()[0]
@@ -152,11 +152,6 @@ try:
     ed.key("ctrl+s")  # the scene has its path now: saved without a dialog
     ed.wait_line(r"^saved " + re.escape(saved_path), "the second save")
     ed.quit()
-except Exception:
-    if ed.proc.poll() is None:
-        ed.proc.kill()
-    print("\n".join(ed.lines()[-40:]))
-    raise
 
 scene = first_save
 curves = scene.get("curves", [])

@@ -98,6 +98,18 @@ class Editor:
         self.seen = 0  # wait_line() looks at the log from here: where the last action began
         self.window = None
 
+    # `with ed:` around a test's steps: on a failure the editor is stopped and the end of its log
+    # printed, then the failure goes on.
+    def __enter__(self):
+        return self
+
+    def __exit__(self, kind, value, trace):
+        if kind is not None:
+            if self.proc.poll() is None:
+                self.proc.kill()
+            print("\n".join(self.lines()[-40:]))
+        return False
+
     # --- reading the log -------------------------------------------------------------------
     def lines(self):
         with open(self.log_path) as f:

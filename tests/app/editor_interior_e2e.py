@@ -47,7 +47,7 @@ def pentagon_points(s):
 
 
 ed = Editor(binary, ["--size", "1200x760", path], work, env)
-try:
+with ed:
     s = ed.wait_state(lambda s: s.count("faces") == 2 and PENTAGON in s.faces, "the scene")
     wid = subprocess.run(["xdotool", "search", "--sync", "--pid", str(ed.proc.pid)],
                          capture_output=True, text=True, check=True).stdout.split()[0]
@@ -94,11 +94,6 @@ try:
     ed.key("ctrl+s")
     ed.wait_line(r"^saved " + re.escape(path), "the save")
     ed.quit()
-except Exception:
-    if ed.proc.poll() is None:
-        ed.proc.kill()
-    print("\n".join(ed.lines()[-40:]))
-    raise
 
 scene = json.load(open(path))
 face = scene["network"]["faces"][PENTAGON]
