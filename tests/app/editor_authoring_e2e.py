@@ -25,10 +25,9 @@ import os
 import re
 import subprocess
 import sys
-import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from editor_driver import Editor, EditorError, xdo  # noqa: E402
+from editor_driver import Editor, check, shot  # noqa: E402
 
 binary, work = sys.argv[1:3]
 env = dict(os.environ, XDG_CONFIG_HOME=os.path.join(work, "config"),
@@ -42,41 +41,15 @@ POINTS = [(0, 0), (1, 0), (1.3, 0.9), (0.5, 1.5), (-0.3, 0.9), (1, -1), (0, -1),
 SCALE = 0.75
 
 
-def shot(name):
-    """With E2E_SHOTS=DIR, a screenshot of the screen as it is now (for looking at the tools)."""
-    if os.environ.get("E2E_SHOTS"):
-        time.sleep(0.5)  # a frame or two for the hover; only pictures depend on it
-        subprocess.run(["import", "-window", "root", os.path.join(os.environ["E2E_SHOTS"],
-                                                                   name + ".png")], check=True)
-
-
-def check(condition, message):
-    if not condition:
-        raise EditorError("FAIL: " + message)
-
-
 ed = Editor(binary, ["--size", "1200x760"], work, env)
 with ed:
     ed.wait_state(lambda s: True, "the first state")
-    wid = subprocess.run(["xdotool", "search", "--sync", "--pid", str(ed.proc.pid)],
-                         capture_output=True, text=True, check=True).stdout.split()[0]
-    subprocess.run(["xdotool", "windowfocus", "--sync", wid], stderr=subprocess.DEVNULL)
+    ed.focus()
 
-    # File > New: an empty network, framed iso; then an orthographic view, where window pixels
-    # map to the work plane affinely.
-    ed.key("ctrl+n")
-    s = ed.wait_state(lambda s: s.count("vertices") == 0 and s.count("edges") == 0 and
-                      not int(s.fields["can-undo"]), "an empty scene")
-    mark = ed.mark()
-    ed.key("5")
-    s = ed.wait_change(mark, "the orthographic view")
-
-    def tool(key, name):
-        ed.key(key)
-        return ed.wait_state(lambda s: s.tool == name, f"the {name} tool")
+    ed.new_scene()
 
     # Vertices: clicks on the work plane.
-    s = tool("v", "Add Vertex")
+    s = ed.tool("v", "Add Vertex")
     for i, (x, y) in enumerate(POINTS):
         px = s.world_to_pixel((SCALE * x, SCALE * y, 0))
         check(60 < px[0] < 840 and 40 < px[1] < 720, f"vertex {i} would be off the view: {px}")
@@ -87,7 +60,7 @@ with ed:
         ed.wait_state(lambda s, n=i + 1: s.count("vertices") == n, f"vertex {i}")
 
     # The pentagon's edges: a chain of clicks with the Add Edge tool, back to vertex 0.
-    s = tool("e", "Add Edge")
+    s = ed.tool("e", "Add Edge")
     for n, v in enumerate([0, 1, 2, 3, 4, 0]):
         ed.click(s.vertices[v])
         if n > 0:
@@ -99,7 +72,7 @@ with ed:
     ed.wait_line(r"^status edge chain ended", "the end of the edge chain")
 
     # Faces: the pentagon on its edges, the others on their vertices.
-    s = tool("m", "Make Face")
+    s = ed.tool("m", "Make Face")
     for e in range(5):
         ed.click(s.edges[e])
         ed.wait_line(rf"^status face on {e + 1} edges", f"edge {e} picked")
@@ -121,7 +94,7 @@ with ed:
     check(s.count("vertices") == 10 and s.count("edges") == 13, f"counts {s.fields}")
 
     # Turn vertex 0's tangent plane by its normal's knob.
-    s = tool("q", "Select")
+    s = ed.tool("q", "Select")
     ed.click(s.vertices[0])
     s = ed.wait_state(lambda s: 0 in s.knobs and s.knobs[0], "vertex 0's knob")
     knob = s.knobs[0]
@@ -137,7 +110,7 @@ with ed:
     ed.wait_line(r"^status fix the tangent plane of vertex 0", "the plane's undo label")
 
     # Split the left quad's outer edge (8 -> 9, made with that face) where it is clicked.
-    s = tool("k", "Split Edge")
+    s = ed.tool("k", "Split Edge")
     split_edge = 11  # a face made on vertices adds its missing edges in loop order: 4-8, 8-9, 9-0
     ed.move(s.edges[split_edge])
     shot("split_edge_hover")
@@ -149,19 +122,19 @@ with ed:
     shot("split_edge_done")
 
     # Delete the triangle (face 2) and make it again.
-    s = tool("q", "Select")
+    s = ed.tool("q", "Select")
     ed.click(s.faces[2])
     ed.wait_line(r"^selection: face 2$", "the triangle selected")
     ed.key("Delete")
     s = ed.wait_state(lambda s: s.count("faces") == 3, "the triangle deleted")
-    s = tool("m", "Make Face")
+    s = ed.tool("m", "Make Face")
     for v in [1, 7, 2]:
         ed.click(s.vertices[v])
     ed.key("Return")
     s = ed.wait_state(lambda s: s.count("faces") == 4, "the triangle made again")
 
     # The first quad (face 1) to GB from the right-click menu.
-    s = tool("q", "Select")
+    s = ed.tool("q", "Select")
     ed.click(s.faces[1], button=3)
     m = ed.wait_line(r"^menu-item GB ([0-9.]+) ([0-9.]+) window", "the context menu's GB item")
     shot("context_menu")

@@ -11,8 +11,4 @@ bin=$1
 lib=$(cd "$(dirname "$0")" && pwd)/editor_e2e_lib.sh
 source "$lib"
 e2e_prepare
-SECONDS=0
-xvfb-run -a -s "-screen 0 1280x800x24" \
-  python3 "$(dirname "$0")/editor_authoring_e2e.py" "$bin" "$tmp"
-e2e_check_cwd
-echo "editor authoring e2e passed in ${SECONDS} s"
+e2e_drive authoring

@@ -28,10 +28,9 @@ import os
 import re
 import subprocess
 import sys
-import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from editor_driver import Editor, EditorError  # noqa: E402
+from editor_driver import Editor, check, shot  # noqa: E402
 
 binary, work = sys.argv[1:3]
 env = dict(os.environ, XDG_CONFIG_HOME=os.path.join(work, "config"),
@@ -41,37 +40,13 @@ POINTS = [(-1.5, 0), (-0.9, 0.9), (-0.3, -0.4), (0.3, 0.8), (0.9, -0.3), (1.5, 0
 SCALE = 0.75
 
 
-def shot(name):
-    """With E2E_SHOTS=DIR, a screenshot of the screen as it is now (for looking at the tools)."""
-    if os.environ.get("E2E_SHOTS"):
-        time.sleep(0.5)
-        subprocess.run(["import", "-window", "root", os.path.join(os.environ["E2E_SHOTS"],
-                                                                   name + ".png")], check=True)
-
-
-def check(condition, message):
-    if not condition:
-        raise EditorError("FAIL: " + message)
-
-
 ed = Editor(binary, ["--size", "1200x760"], work, env)
 with ed:
     ed.wait_state(lambda s: True, "the first state")
-    wid = subprocess.run(["xdotool", "search", "--sync", "--pid", str(ed.proc.pid)],
-                         capture_output=True, text=True, check=True).stdout.split()[0]
-    subprocess.run(["xdotool", "windowfocus", "--sync", wid], stderr=subprocess.DEVNULL)
-    ed.key("ctrl+n")
-    s = ed.wait_state(lambda s: s.count("vertices") == 0 and s.count("curves") == 0 and
-                      not int(s.fields["can-undo"]), "an empty scene")
-    mark = ed.mark()
-    ed.key("5")
-    s = ed.wait_change(mark, "the orthographic view")
+    ed.focus()
+    ed.new_scene()
 
-    def tool(key, name):
-        ed.key(key)
-        return ed.wait_state(lambda s: s.tool == name, f"the {name} tool")
-
-    s = tool("b", "New Curve")
+    s = ed.tool("b", "New Curve")
     for i, (x, y) in enumerate(POINTS):
         px = s.world_to_pixel((SCALE * x, SCALE * y, 0))
         check(60 < px[0] < 840 and 40 < px[1] < 720, f"point {i} would be off the view: {px}")
@@ -85,7 +60,7 @@ with ed:
     shot("curve_made")
 
     # Insert a knot where the right-click menu is opened (on point 2), then the curvature graph.
-    s = tool("q", "Select")
+    s = ed.tool("q", "Select")
     ed.click(s.curve_points[(0, 2)], button=3)
     m = ed.wait_line(r"^menu-item Insert Knot ([0-9.]+) ([0-9.]+) window", "Insert Knot")
     shot("curve_menu")

@@ -180,6 +180,27 @@ class Editor:
         return self.wait_state(newer, what)
 
     # --- acting ------------------------------------------------------------------------------
+    def focus(self):
+        """Gives the editor's window the keyboard (Xvfb has no window manager to do it)."""
+        wid = subprocess.run(["xdotool", "search", "--sync", "--pid", str(self.proc.pid)],
+                             capture_output=True, text=True, check=True).stdout.split()[0]
+        subprocess.run(["xdotool", "windowfocus", "--sync", wid], stderr=subprocess.DEVNULL)
+
+    def new_scene(self):
+        """File > New (an empty network, framed iso), then the orthographic view, where window
+        pixels map to the work plane affinely. Returns the state in that view."""
+        self.key("ctrl+n")
+        self.wait_state(lambda s: s.count("vertices") == 0 and s.count("edges") == 0 and
+                        s.count("curves") == 0 and not int(s.fields["can-undo"]), "an empty scene")
+        mark = self.mark()
+        self.key("5")
+        return self.wait_change(mark, "the orthographic view")
+
+    def tool(self, key, name):
+        """Picks a tool by its key; returns the state once the editor reports it active."""
+        self.key(key)
+        return self.wait_state(lambda s: s.tool == name, f"the {name} tool")
+
     def _act(self):
         """Marks where the next action begins in the log (see wait_line)."""
         self.seen = len(self.lines())

@@ -49,3 +49,15 @@ e2e_check_cwd() {
     echo "FAIL: the editor wrote into the working directory:"; ls -A "$tmp/cwd"; exit 1
   fi
 }
+
+# The tests written in Python (editor_NAME_e2e.py, driven through editor_driver.py): runs one
+# under Xvfb with the editor binary $bin and the work folder $tmp, then checks the working
+# directory was left alone.
+e2e_drive() {
+  local name=$1
+  SECONDS=0
+  xvfb-run -a -s "-screen 0 1280x800x24" \
+    python3 "$(dirname "${BASH_SOURCE[0]}")/editor_${name}_e2e.py" "$bin" "$tmp"
+  e2e_check_cwd
+  echo "editor $name e2e passed in ${SECONDS} s"
+}

@@ -22,10 +22,9 @@ import os
 import re
 import subprocess
 import sys
-import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from editor_driver import Editor, EditorError, check, shot  # noqa: E402
+from editor_driver import Editor, check, shot  # noqa: E402
 
 binary, work = sys.argv[1:3]
 env = dict(os.environ, XDG_CONFIG_HOME=os.path.join(work, "config"),
@@ -49,9 +48,7 @@ def pentagon_points(s):
 ed = Editor(binary, ["--size", "1200x760", path], work, env)
 with ed:
     s = ed.wait_state(lambda s: s.count("faces") == 2 and PENTAGON in s.faces, "the scene")
-    wid = subprocess.run(["xdotool", "search", "--sync", "--pid", str(ed.proc.pid)],
-                         capture_output=True, text=True, check=True).stdout.split()[0]
-    subprocess.run(["xdotool", "windowfocus", "--sync", wid], stderr=subprocess.DEVNULL)
+    ed.focus()
     shot("opened")
     # A degree-3 GB face has one free point, its centre.
     check(set(pentagon_points(s)) == {"centre"}, f"free points at degree 3: {s.free_points}")

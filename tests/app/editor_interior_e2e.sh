@@ -11,9 +11,5 @@ src=$2
 lib=$(cd "$(dirname "$0")" && pwd)/editor_e2e_lib.sh
 source "$lib"
 e2e_prepare
-SECONDS=0
 cp "$src/assets/default.json" "$tmp/pentagon.json"
-xvfb-run -a -s "-screen 0 1280x800x24" \
-  python3 "$(dirname "$0")/editor_interior_e2e.py" "$bin" "$tmp"
-e2e_check_cwd
-echo "editor interior e2e passed in ${SECONDS} s"
+e2e_drive interior
