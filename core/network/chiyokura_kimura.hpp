@@ -1,4 +1,5 @@
-// The Chiyokura–Kimura construction (1983; seed lecture) of cross-boundary tangent fields along
+// The Chiyokura–Kimura construction (H. Chiyokura, F. Kimura, "Design of solids with free-form
+// surfaces", SIGGRAPH 1983) of cross-boundary tangent fields along
 // one network edge. With c(t) the edge derivative and b(t) the linear interpolation of
 // b0 = unit(n0 x c(0)) and b3 = unit(n1 x c(1)) (n0, n1 the end vertices' tangent-plane
 // normals), every face using the edge gets the field

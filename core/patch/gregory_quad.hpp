@@ -18,7 +18,7 @@
 //     +-------------------------> u
 //
 // Twin weights: the twin of side X has the weight "distance to the corner's other side", so it
-// alone survives on side X (seed lecture, after Chiyokura–Kimura):
+// alone survives on side X (Chiyokura–Kimura, SIGGRAPH 1983):
 //   P11 = (u T12 + v T19) / (u + v)              P21 = ((1-u) T13 + v T14) / ((1-u) + v)
 //   P22 = ((1-v) T15 + (1-u) T16) / (2 - u - v)  P12 = (u T17 + (1-v) T18) / (u + (1-v))
 // At a corner the weights are 0/0. Value and first derivatives of the blended basis function

@@ -1,4 +1,5 @@
-// Triangular Gregory patch over the unit triangle (Longhi 1985, as in the seed lecture): a
+// Triangular Gregory patch over the unit triangle (L. Longhi, "Interpolating patches between
+// cubic boundaries", UC Berkeley report UCB/CSD 85/249, 1985): a
 // quartic Bézier triangle whose three interior points are each split into two twins, one per
 // adjacent side, blended rationally in barycentric coordinates. The boundaries are quartic
 // (network edges are cubic and enter degree-elevated): a quartic triangle has the three
