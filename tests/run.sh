@@ -8,11 +8,14 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 mode=${1:-release}
 [ "${PATCHLAB_SKIP_INSTALL:-0}" = 1 ] || bash .ci/install-deps
+# ccache is not a dependency; where a developer has it, rebuilds of unchanged files are cache hits.
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 if [ "$mode" = "--sanitize" ]; then
   dir=build-asan
   # Debug keeps the asserts; -O1 keeps the sanitized suite fast enough for a 2-core CI.
   cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g -O1" \
-    -DPATCHLAB_SANITIZE=ON
+    -DPATCHLAB_SANITIZE=ON "${launcher[@]}"
   # LeakSanitizer reports Mesa's and libgomp's process-lifetime allocations; those are not ours
   # (OpenSubdiv and OpenCASCADE's image libraries still load libgomp).
   export LSAN_OPTIONS="suppressions=$root/tests/lsan.supp:print_suppressions=0"
@@ -20,7 +23,7 @@ if [ "$mode" = "--sanitize" ]; then
   export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 else
   dir=build
-  cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release
+  cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release "${launcher[@]}"
 fi
 cmake --build "$dir"
 # The core's parallel loops (oneTBB) use the cores this process may run on; a worker the kernel
