@@ -19,10 +19,13 @@ std::span<const Command> commands() {
               "[--scheme gregory|gb]",
               run_export},
       Command{"analyze", "FILE [--density N] [--scheme gregory|gb] [--json]", run_analyze},
+      Command{"compare",
+              "FILE [--schemes S,S,...] [--base S] [--faces F,F,...] [--density N] [--json]",
+              run_compare},
       Command{"convert", "IN -o OUT  (.gbp <-> .json scene)", run_convert},
       Command{"render",
-              "FILE -o OUT.png [--size WxH] [--mode MODE] [--view VIEW] [--compare] "
-              "[--transparent] [--density N]",
+              "FILE -o OUT.png [--size WxH] [--mode MODE] [--view VIEW] [--compare [--schemes "
+              "S,S,...]] [--transparent] [--density N]",
               run_render},
       Command{"gbnet", "IN.gbp -o OUT.gbp [--defaults boundary|ring1] [--elevate K]", run_gbnet},
       Command{"sample", "cube-sphere -o OUT.json [--cells K] [--scheme auto|gregory|gb]",
