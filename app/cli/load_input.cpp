@@ -5,6 +5,7 @@
 #include "core/base/data_error.hpp"
 #include "core/io/gbp_io.hpp"
 #include "core/io/scene_io.hpp"
+#include "core/scene/network_edit.hpp"
 
 namespace pl {
 
@@ -21,9 +22,8 @@ Scene load_input(const std::filesystem::path& path) {
 
 std::optional<FaceScheme> parse_scheme_option(const std::optional<std::string>& value) {
   if (!value) return std::nullopt;
-  if (*value == "gregory") return FaceScheme::Gregory;
-  if (*value == "gb") return FaceScheme::GB;
-  throw UsageError("--scheme takes gregory or gb, got \"" + *value + "\"");
+  if (const auto s = parse_scheme_keyword(*value); s && *s != FaceScheme::Auto) return s;
+  throw UsageError("--scheme takes one of " + face_scheme_keywords() + ", got \"" + *value + "\"");
 }
 
 std::vector<std::string> split_list(const std::string& list, const std::string& option) {

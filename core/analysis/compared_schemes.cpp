@@ -5,22 +5,18 @@
 namespace pl {
 
 std::vector<FaceScheme> comparable_schemes() {
-  return {FaceScheme::Gregory, FaceScheme::GB};
+  const auto all = all_face_schemes();
+  return {all.begin(), all.end()};
 }
 
 std::optional<FaceScheme> comparable_scheme(std::string_view keyword) {
-  for (FaceScheme s : comparable_schemes())
-    if (scheme_keyword(s) == keyword) return s;
+  const auto s = parse_scheme_keyword(keyword);
+  if (s && *s != FaceScheme::Auto) return s;
   return std::nullopt;
 }
 
 std::string comparable_scheme_keywords() {
-  std::string out;
-  for (FaceScheme s : comparable_schemes()) {
-    if (!out.empty()) out += ", ";
-    out += scheme_keyword(s);
-  }
-  return out;
+  return face_scheme_keywords();
 }
 
 namespace {
@@ -37,6 +33,7 @@ constexpr Titles kTitles[] = {
     {"generalized-coons", "Generalized Coons", "gen. Coons"},
     {"composite-ribbon", "Composite ribbon", "composite"},
     {"midpoint", "Midpoint", "midpoint"},
+    {"midpoint-coons", "Midpoint Coons", "midpoint Coons"},
 };
 const Titles* titles_of(FaceScheme s) {
   const std::string k = scheme_keyword(s);

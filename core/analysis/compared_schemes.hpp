@@ -1,5 +1,6 @@
-// The face schemes a comparison offers: every scheme a network face can be filled with, in the
-// order the interface lists them (Auto is not one: it resolves to one of them per face). The CLI's
+// The face schemes a comparison offers: every scheme a network face can be filled with
+// (all_face_schemes, core/scene/network_edit.hpp), in that order (Auto is not one: it resolves
+// to one of them per face). The CLI's
 // `compare` and the editor's comparison panes take their choices from this one list, so a scheme
 // added to the scene format appears in both without further work.
 #pragma once

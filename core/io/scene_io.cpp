@@ -13,6 +13,7 @@
 #include "core/io/patch_codec.hpp"
 #include "core/io/scene_checks.hpp"
 #include "core/patch/gb/default_net.hpp"
+#include "core/scene/network_edit.hpp"
 
 namespace pl {
 
@@ -20,15 +21,13 @@ namespace {
 
 FaceScheme read_scheme(const JsonNode& node, int sides) {
   const std::string s = node.string();
-  if (s == "auto") return FaceScheme::Auto;
-  if (s == "gb") return FaceScheme::GB;
-  if (s == "gregory") {
-    if (sides != 3 && sides != 4)
-      node.fail("scheme \"gregory\" needs a face of 3 or 4 sides, this one has " +
-                std::to_string(sides));
-    return FaceScheme::Gregory;
-  }
-  node.fail("unknown scheme \"" + s + "\" (allowed: auto, gregory, gb)");
+  const std::optional<FaceScheme> scheme = parse_scheme_keyword(s);
+  if (!scheme)
+    node.fail("unknown scheme \"" + s + "\" (allowed: auto, " + face_scheme_keywords() + ")");
+  if (*scheme == FaceScheme::Gregory && sides != 3 && sides != 4)
+    node.fail("scheme \"gregory\" needs a face of 3 or 4 sides, this one has " +
+              std::to_string(sides));
+  return *scheme;
 }
 
 // The stored index of a free point in the face's .gbp net: two names of one shared corner-block
@@ -271,8 +270,7 @@ std::string scene_to_json(const Scene& scene) {
     for (const NetworkFace& f : n.faces) {
       Ordered jf = Ordered::object();
       jf["loop"] = f.loop;
-      if (f.scheme == FaceScheme::Gregory) jf["scheme"] = "gregory";
-      if (f.scheme == FaceScheme::GB) jf["scheme"] = "gb";
+      if (f.scheme != FaceScheme::Auto) jf["scheme"] = scheme_keyword(f.scheme);
       if (!f.name.empty()) jf["name"] = f.name;
       if (f.degree != 3) jf["degree"] = f.degree;
       if (!f.offsets.empty()) jf["offsets"] = interior_offsets_json(f.offsets);
