@@ -156,6 +156,7 @@ void Editor::follow_document() {
   if (views_.poll()) {
     // The worker's evaluation is uploaded: the first frame of the scene follows.
     if (!loaded_ms_) loaded_ms_ = ms_since_launch();
+    if (!views_.compare_error().empty()) status_.say("cannot compare: " + views_.compare_error());
     nav_.unframe();
     for (ScenePicker& p : pickers_) p.reset();
   }

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/base/data_error.hpp"
+#include "core/scene/network_edit.hpp"
 
 namespace pl {
 
@@ -18,6 +19,7 @@ void SceneViews::rebuild(const Document& doc, const Preferences& prefs, bool com
   main_.reset();
   compare_views_.clear();
   error_.clear();
+  compare_error_.clear();
   fields_.clear();
   difference_gpu_.clear();
   range_key_ = {};
@@ -57,12 +59,16 @@ void SceneViews::rebuild(const Document& doc, const Preferences& prefs, bool com
         std::lock_guard lock(job->mutex);
         job->views.push_back(std::move(v));
       }
-    } catch (const DataError& e) {
-      std::lock_guard lock(job->mutex);
-      job->error = e.what();
     } catch (const std::exception& e) {
       std::lock_guard lock(job->mutex);
-      job->error = e.what();
+      // A pane whose scheme cannot fill the network (a ribbon scheme on a concave face) takes
+      // the comparison away, not the scene's own view.
+      const std::size_t failed = job->views.size();
+      if (failed == 0)
+        job->error = e.what();
+      else
+        job->pane_error = "pane " + std::to_string(failed) + " (" +
+                          scheme_keyword(*schemes[failed]) + "): " + e.what();
     }
   });
   if (worker_.wait_for(wait) == std::future_status::ready) poll();
@@ -80,6 +86,7 @@ bool SceneViews::poll() {
     return true;
   }
   main_ = std::make_unique<EvaluatedView>(std::move(job->views[0]));
+  compare_error_ = job->pane_error;
   if (job->compare && job->views.size() == job->setup.schemes.size() + 1) {
     for (std::size_t i = 1; i < job->views.size(); ++i)
       compare_views_.push_back(std::make_unique<EvaluatedView>(std::move(job->views[i])));

@@ -60,6 +60,9 @@ class SceneViews {
 
   bool ready() const { return main_ != nullptr; }
   const std::string& error() const { return error_; }
+  // Why the comparison asked for is not shown (a pane's scheme cannot fill the network; the
+  // scene's own view is), or "".
+  const std::string& compare_error() const { return compare_error_; }
   // Comparing, or evaluating the comparison.
   bool compare() const { return compare_ || (job_ && job_->compare); }
   int panels() const { return compare_ ? int(compare_views_.size()) : 1; }
@@ -106,6 +109,7 @@ class SceneViews {
     std::string stage = "reading";
     std::vector<ViewEvaluation> views;  // main, then one per pane when comparing
     std::string error;
+    std::string pane_error;  // the first pane that could not be evaluated, and why
     bool compare = false;
     CompareSetup setup;
   };
@@ -117,7 +121,7 @@ class SceneViews {
   std::vector<std::unique_ptr<EvaluatedView>> compare_views_;  // one per pane
   CompareSetup setup_;
   bool compare_ = false;
-  std::string error_;
+  std::string error_, compare_error_;
   double last_eval_ms_ = 0;
   std::vector<DifferenceField> fields_;  // one per pane (the base pane's stays empty)
   struct RangeKey {
