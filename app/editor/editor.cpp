@@ -104,7 +104,7 @@ EditorLayout Editor::layout() const {
 }
 
 Box Editor::scene_box() const {
-  return views_.ready() ? views_.main()->shown().draw().bounds() : Box();
+  return views_.ready() ? views_.panel(0).shown().draw().bounds() : Box();
 }
 
 PickScene Editor::pick_scene(int panel, std::vector<SelectionItem>& items) const {
@@ -282,7 +282,7 @@ void Editor::draw_interface(const ColorRange& range) {
   figures.coarse = views_.ready() && !views_.settled();
   figures.selected = selection_.size();
   figures.tool = tools_.active().name();
-  if (views_.ready()) figures.drawing = views_.main()->drawing_note();
+  if (views_.ready()) figures.drawing = views_.panel(0).drawing_note();
   if (mouse_.under.item) figures.under = describe(*mouse_.under.item);
   if (work_plane_.shown && mouse_.panel >= 0) {
     const ImGuiIO& io = ImGui::GetIO();

@@ -123,7 +123,7 @@ void Editor::export_file(const fs::path& path) {
   }
   if (!views_.ready()) return;
   try {
-    export_meshes(views_.main()->fine().draw().surfaces, path);
+    export_meshes(views_.own(session_.doc()).fine().draw().surfaces, path);
     status_.say("exported " + path.filename().string());
   } catch (const std::exception& e) {
     dialogs_.show_error("Cannot export", path.string() + ": " + e.what());

@@ -119,7 +119,9 @@ bool SceneViews::follow(const Document& doc, const DisplaySettings& d) {
     v.configure_combs(d.combs, d.comb_teeth);
     changed |= v.follow(doc);
   };
-  if (main_) follow_one(*main_);
+  // While comparing, the scene's own view is not shown: it is not followed either (leaving the
+  // comparison evaluates afresh), so a drag frame costs one evaluation per pane.
+  if (main_ && !compare_) follow_one(*main_);
   if (compare_)
     for (auto& v : compare_views_) follow_one(*v);
   if (changed)
@@ -130,20 +132,25 @@ bool SceneViews::follow(const Document& doc, const DisplaySettings& d) {
 
 bool SceneViews::fit_to_screen(const std::function<double(const Vec3&, double)>& pixels,
                                const Document& doc) {
-  bool changed = main_ && main_->fit_to_screen(pixels, doc);
+  bool changed = main_ && !compare_ && main_->fit_to_screen(pixels, doc);
   if (compare_)
     for (auto& v : compare_views_) changed |= v->fit_to_screen(pixels, doc);
   return changed;
 }
 
 void SceneViews::show_net(const NetFocus& focus, double point_px, const Document& doc) {
-  if (main_) main_->show_net(focus, point_px, doc);
+  if (main_ && !compare_) main_->show_net(focus, point_px, doc);
   if (compare_)
     for (auto& v : compare_views_) v->show_net(focus, point_px, doc);
 }
 
+const EvaluatedView& SceneViews::own(const Document& doc) {
+  main_->follow(doc);
+  return *main_;
+}
+
 bool SceneViews::settled() const {
-  if (!main_ || !main_->settled()) return false;
+  if (!main_ || (!compare_ && !main_->settled())) return false;
   for (const auto& v : compare_views_)
     if (!v->settled()) return false;
   return true;

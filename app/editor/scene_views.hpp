@@ -72,7 +72,10 @@ class SceneViews {
   void set_base(FaceScheme base);
   // The view drawn in panel i (the main view when not comparing). ready() must hold.
   const EvaluatedView& panel(int i) const;
+  // The scene's own filling; while comparing it is not followed (not shown): own() brings it
+  // up to the document first (an export while comparing). Throws DataError like follow().
   const EvaluatedView* main() const { return main_.get(); }
+  const EvaluatedView& own(const Document& doc);
   // Every view shown is at its fine density (after a drag: all panes exact).
   bool settled() const;
   double last_eval_ms() const { return last_eval_ms_; }
