@@ -2,6 +2,7 @@
 //  ...], "midpoint": [x, y, z], "twists": "exact"|"forward-difference"}: a face given by explicit
 // ribbons and filled by a ribbon-based transfinite scheme (docs/patch-types.md). Each C is a
 // curve object of the `curves` key (bezier, bspline or nurbs). Not "gb-ribbons".
+#include <cmath>
 #include <string>
 
 #include "core/io/curve_codec.hpp"
@@ -22,7 +23,7 @@ std::string scheme_names() {
 }
 
 std::unique_ptr<Patch> read_ribbon_patch(const JsonNode& node) {
-  node.allow_only({"type", "name", "scheme", "sides", "domain", "midpoint", "twists"});
+  node.allow_only({"type", "name", "scheme", "sides", "domain", "midpoint", "fullness", "twists"});
   const JsonNode sn = node.at("scheme");
   const std::string name = sn.string();
   const auto scheme = transfinite::parse_ribbon_scheme(name);
@@ -58,6 +59,13 @@ std::unique_ptr<Patch> read_ribbon_patch(const JsonNode& node) {
       m->fail("a midpoint is a setting of the midpoint and midpoint-coons schemes, not of " + name);
     options.midpoint = m->point();
   }
+  if (const auto f = node.find("fullness")) {
+    if (!transfinite::has_central_point(*scheme))
+      f->fail("fullness is a setting of the midpoint and midpoint-coons schemes, not of " + name);
+    if (options.midpoint) f->fail("give a midpoint or a fullness, not both");
+    options.fullness = f->number();
+    if (std::abs(options.fullness) > 100) f->fail("the fullness lies in [-100, 100]");
+  }
   if (const auto t = node.find("twists")) {
     const std::string v = t->string();
     if (v == "forward-difference")
@@ -83,6 +91,7 @@ void write_ribbon_patch(const Patch& patch, nlohmann::json& out) {
     out["domain"] = dom;
   }
   if (p.options().midpoint) out["midpoint"] = point_json(*p.options().midpoint);
+  if (p.options().fullness != 1) out["fullness"] = p.options().fullness;
   if (p.options().twists == transfinite::TwistEstimate::ForwardDifference)
     out["twists"] = "forward-difference";
 }

@@ -1,6 +1,7 @@
 #include "core/io/scene_io.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <stdexcept>
 #include <utility>
@@ -110,7 +111,7 @@ Network read_network(const JsonNode& node) {
     }
   if (auto faces = node.find("faces"))
     for (const JsonNode& f : faces->items()) {
-      f.allow_only({"loop", "scheme", "name", "degree", "offsets"});
+      f.allow_only({"loop", "scheme", "name", "degree", "offsets", "fullness"});
       NetworkFace face;
       const JsonNode loop = f.at("loop");
       if (loop.items().size() > std::size_t(kMaxFaceSides))
@@ -126,6 +127,12 @@ Network read_network(const JsonNode& node) {
       if (auto s = f.find("scheme"))
         face.scheme = read_scheme(*s, static_cast<int>(face.loop.size()));
       if (auto name = f.find("name")) face.name = name->string();
+      if (auto full = f.find("fullness")) {
+        if (face.scheme != FaceScheme::Midpoint && face.scheme != FaceScheme::MidpointCoons)
+          full->fail("fullness is a setting of the midpoint and midpoint-coons schemes");
+        face.fullness = full->number();
+        if (std::abs(face.fullness) > 100) full->fail("the fullness lies in [-100, 100]");
+      }
       read_interior(f, face);
       net.faces.push_back(std::move(face));
     }
@@ -273,6 +280,7 @@ std::string scene_to_json(const Scene& scene) {
       if (f.scheme != FaceScheme::Auto) jf["scheme"] = scheme_keyword(f.scheme);
       if (!f.name.empty()) jf["name"] = f.name;
       if (f.degree != 3) jf["degree"] = f.degree;
+      if (f.fullness != 1) jf["fullness"] = f.fullness;
       if (!f.offsets.empty()) jf["offsets"] = interior_offsets_json(f.offsets);
       net["faces"].push_back(jf);
     }

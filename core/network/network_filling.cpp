@@ -32,7 +32,7 @@ FacePatch build_face_patch(int face, FaceScheme scheme, const FaceRibbons& ribbo
   }
   if (const std::optional<transfinite::RibbonScheme> rs = ribbon_scheme_of(scheme)) {
     try {
-      fp.patch = ribbon_face_patch(ribbons, *rs);
+      fp.patch = ribbon_face_patch(ribbons, *rs, data.fullness);
     } catch (const std::invalid_argument& e) {
       throw DataError(source, face_path(face),
                       "cannot build the " + scheme_keyword(scheme) + " patch: " + e.what());

@@ -20,7 +20,7 @@ std::vector<RibbonSide> explicit_ribbons(const FaceRibbons& ribbons) {
 }
 
 std::unique_ptr<RibbonPatch> ribbon_face_patch(const FaceRibbons& ribbons,
-                                               transfinite::RibbonScheme scheme) {
+                                               transfinite::RibbonScheme scheme, double fullness) {
   const std::vector<double> turning = face_turning_angles(ribbons);
   const int n = static_cast<int>(turning.size());
   for (int i = 0; i < n; ++i)
@@ -31,6 +31,7 @@ std::unique_ptr<RibbonPatch> ribbon_face_patch(const FaceRibbons& ribbons,
                                   " scheme fills convex faces only (use gb for concave faces)");
   RibbonPatchOptions options;
   options.check_corners = false;  // compatible by construction (face_ribbons.hpp)
+  if (transfinite::has_central_point(scheme)) options.fullness = fullness;
   return std::make_unique<RibbonPatch>(scheme, explicit_ribbons(ribbons), options);
 }
 

@@ -22,7 +22,9 @@ std::vector<RibbonSide> explicit_ribbons(const FaceRibbons& ribbons);
 // The face filled by `scheme`. Throws std::invalid_argument for a concave face (naming the loop
 // position of its reflex corner): the schemes' parameterizations need a convex domain, and the
 // regular n-gon over a concave boundary would fold.
+// fullness: the midpoint schemes' setting (RibbonPatchOptions::fullness), ignored by the others.
 std::unique_ptr<RibbonPatch> ribbon_face_patch(const FaceRibbons& ribbons,
-                                               transfinite::RibbonScheme scheme);
+                                               transfinite::RibbonScheme scheme,
+                                               double fullness = 1);
 
 }  // namespace pl

@@ -56,6 +56,9 @@ struct NetworkFace {
   std::string name;
   int degree = 3;  // GB faces: the degree of every ribbon along its side (>= 3)
   std::vector<InteriorOffset> offsets;  // GB faces: the free points moved from their defaults
+  // Midpoint schemes: the fullness of the face (1: the schemes' default midpoint; see
+  // RibbonPatchOptions::fullness and docs/scene-format.md).
+  double fullness = 1;
   bool operator==(const NetworkFace&) const = default;
 };
 

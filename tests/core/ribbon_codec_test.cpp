@@ -56,6 +56,14 @@ TEST(RibbonCodec, NetworkFaceSchemesSurviveASave) {
     EXPECT_EQ(back.network->faces[0].scheme, s) << scheme_keyword(s);
     EXPECT_EQ(parse_scheme_keyword(scheme_keyword(s)), s);
   }
+  scene.network->faces[0].scheme = FaceScheme::MidpointCoons;
+  scene.network->faces[0].fullness = 1.5;
+  const std::string text = scene_to_json(scene);
+  EXPECT_EQ(parse_scene(text, "round trip").network->faces[0].fullness, 1.5);
+  // Only the midpoint schemes have a fullness.
+  std::string other = text;
+  other.replace(other.find("midpoint-coons"), 14, "gb");
+  EXPECT_THROW(parse_scene(other, "other"), DataError);
 }
 
 }  // namespace

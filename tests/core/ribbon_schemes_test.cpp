@@ -224,6 +224,18 @@ TEST(RibbonSchemes, MidpointSchemesPassThroughTheirMidpoint) {
       o.midpoint = Vec3(0.4, -0.3, 4.0);
       const RibbonPatch p(s, test::reference_face(n), o);
       EXPECT_LT(glm::length(p.evaluate(Vec2(0)).p - *o.midpoint), 1e-12) << label(s, n);
+      // Fullness f: the midpoint c + f (m - c), c the corners' average, m the default midpoint.
+      const RibbonPatch plain(s, test::reference_face(n));
+      RibbonPatchOptions flat, full;
+      flat.fullness = 0;
+      full.fullness = 2;
+      const RibbonPatch a(s, test::reference_face(n), flat), b(s, test::reference_face(n), full);
+      Vec3 c(0);
+      for (const RibbonSide& side : plain.sides()) c += side.curve.points.back();
+      c /= double(n);
+      const Vec3 m = plain.evaluate(Vec2(0)).p;
+      EXPECT_LT(glm::length(a.evaluate(Vec2(0)).p - c), 1e-12) << label(s, n);
+      EXPECT_LT(glm::length(b.evaluate(Vec2(0)).p - (c + 2.0 * (m - c))), 1e-12) << label(s, n);
     }
 }
 

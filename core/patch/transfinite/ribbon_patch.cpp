@@ -137,9 +137,13 @@ RibbonPatch::RibbonPatch(RibbonScheme scheme, std::vector<RibbonSide> sides,
       options_(std::move(options)),
       domain_(make_domain(sides_.size(), options_)),
       params_(domain_.vertices(), domain_centre(domain_, !options_.domain)) {
-  if (options_.midpoint && !transfinite::has_central_point(scheme_))
-    throw std::invalid_argument("a midpoint is a setting of the midpoint schemes only, not of " +
-                                std::string(transfinite::ribbon_scheme_name(scheme_)));
+  if ((options_.midpoint || options_.fullness != 1) && !transfinite::has_central_point(scheme_))
+    throw std::invalid_argument(
+        "a midpoint or fullness is a setting of the midpoint schemes "
+        "only, not of " +
+        std::string(transfinite::ribbon_scheme_name(scheme_)));
+  if (!std::isfinite(options_.fullness))
+    throw std::invalid_argument("the fullness must be a finite number");
   unit_curves_ = unit_sides(sides_);
   const int n = static_cast<int>(sides_.size());
   if (options_.check_corners) {
@@ -167,11 +171,12 @@ RibbonPatch::RibbonPatch(RibbonScheme scheme, std::vector<RibbonSide> sides,
 
 namespace {
 
-// The central control point C that puts `midpoint` (or the default midpoint) on the surface at
+// The central control point C that puts `midpoint` (or the default midpoint moved by the
+// fullness) on the surface at
 // the domain centre: C = (M - S0(centre)) / deficiency(centre).
 Vec3 solve_central_point(RibbonScheme scheme, const RibbonSet& r,
-                         const transfinite::PolygonParameters& params,
-                         const std::optional<Vec3>& m) {
+                         const transfinite::PolygonParameters& params, const std::optional<Vec3>& m,
+                         double fullness) {
   if (!transfinite::has_central_point(scheme)) return Vec3(0);
   Vec3 mid(0);
   if (m) {
@@ -182,6 +187,12 @@ Vec3 solve_central_point(RibbonScheme scheme, const RibbonSet& r,
       mid += s.curve.at(0.5).p + 0.25 * s.cross.at(0.5).p;  // I_i(1/2, 1/2), gamma(1/2) = 1/4
     }
     mid *= 1.0 / r.size();
+    if (fullness != 1) {
+      Vec3 corners(0);
+      for (int i = 0; i < r.size(); ++i) corners += r.corner(i).point;
+      corners *= 1.0 / r.size();
+      mid = corners + fullness * (mid - corners);
+    }
   }
   const SchemeInput in{r, params, Vec3(0)};
   const transfinite::DeficientSurface d =
@@ -220,7 +231,7 @@ SurfaceJet evaluate_with(RibbonScheme scheme, const SchemeInput& in, double diam
 
 void RibbonPatch::rebuild() {
   ribbons_ = std::make_shared<RibbonSet>(unit_curves_, options_.twists);
-  central_ = solve_central_point(scheme_, *ribbons_, params_, options_.midpoint);
+  central_ = solve_central_point(scheme_, *ribbons_, params_, options_.midpoint, options_.fullness);
 }
 
 ControlPointKind RibbonPatch::kind(std::size_t k) const {
@@ -269,7 +280,7 @@ SurfaceJet RibbonPatch::evaluate_points(const std::vector<Vec3>& points, Vec2 x)
   const RibbonSet r = ribbon_set_of(points);
   const std::optional<Vec3> m =
       options_.midpoint ? std::optional<Vec3>(points.back()) : std::nullopt;
-  const Vec3 c = solve_central_point(scheme_, r, params_, m);
+  const Vec3 c = solve_central_point(scheme_, r, params_, m, options_.fullness);
   return evaluate_with(scheme_, {r, params_, c}, diameter_, x);
 }
 
@@ -293,7 +304,7 @@ void RibbonPatch::influence(std::size_t k, std::span<const Vec2> xs, std::span<J
   unit.at(k) = Vec3(1, 0, 0);
   const RibbonSet r = ribbon_set_of(unit);
   const std::optional<Vec3> m = options_.midpoint ? std::optional<Vec3>(unit.back()) : std::nullopt;
-  const SchemeInput in{r, params_, solve_central_point(scheme_, r, params_, m)};
+  const SchemeInput in{r, params_, solve_central_point(scheme_, r, params_, m, options_.fullness)};
   for (std::size_t i = 0; i < xs.size() && i < out.size(); ++i)
     out[i] = component(evaluate_with(scheme_, in, diameter_, xs[i]), 0);
 }

@@ -38,6 +38,10 @@ struct RibbonPatchOptions {
   // Midpoint schemes: the point the surface passes through at the domain centre. None: the
   // average of the side interpolants' midpoints, (1/n) sum_i (P_i(1/2) + D_i(1/2) / 4).
   std::optional<Vec3> midpoint;
+  // Midpoint schemes without an explicit midpoint: the fullness f puts the midpoint at
+  // c + f (m - c), c the average of the corners and m the default midpoint above; 1 is the
+  // default, 0 pulls the middle to the corners' average, above 1 the face bulges more.
+  double fullness = 1;
   // The domain polygon (counter-clockwise, strictly convex). None: the regular n-gon of
   // ConvexPolygonDomain::regular.
   std::optional<std::vector<Vec2>> domain;

@@ -4,15 +4,38 @@
 #include <limits>
 #include <stdexcept>
 
+#include "core/math/bspline_basis.hpp"
 #include "core/patch/transfinite/vec_jet.hpp"
 
 namespace pl::transfinite {
 
 UnitCurve::UnitCurve(SplineCurve spline) : spline_(std::move(spline)) {
   validate_spline_curve(spline_);
+  const int p = spline_.degree;
+  bezier_ = !spline_.rational() && spline_.points.size() == std::size_t(p + 1) &&
+            spline_.t_min() == 0 && spline_.t_max() == 1 && spline_.knots.front() == 0 &&
+            spline_.knots.back() == 1;
 }
 
 CurvePoint UnitCurve::at(double s) const {
+  if (bezier_) {
+    // de Casteljau down to the last three points b0, b1, b2 (degree >= 2) or two (degree 1).
+    const auto& cp = spline_.points;
+    const int d = spline_.degree;
+    Vec3 b[kMaxSplineDegree + 1];
+    for (int k = 0; k <= d; ++k) b[k] = cp[std::size_t(k)];
+    const double t = s, u = 1 - s;
+    for (int level = d; level > 2; --level)
+      for (int k = 0; k < level; ++k) b[k] = u * b[k] + t * b[k + 1];
+    if (d == 1) return {u * b[0] + t * b[1], b[1] - b[0], Vec3(0)};
+    const Vec3 e0 = b[1] - b[0], e1 = b[2] - b[1];
+    return {u * (u * b[0] + t * b[1]) + t * (u * b[1] + t * b[2]), double(d) * (u * e0 + t * e1),
+            double(d * (d - 1)) * (e1 - e0)};
+  }
+  return at_by_basis(s);
+}
+
+CurvePoint UnitCurve::at_by_basis(double s) const {
   const double a = spline_.t_min(), b = spline_.t_max();
   if (a == 0 && b == 1) return evaluate(spline_, s);
   const double len = b - a;
@@ -62,8 +85,8 @@ RibbonSet::RibbonSet(std::vector<RibbonCurves> sides, TwistEstimate twists)
       c.twist1 = -a.cross.at(1).d1;
       c.twist2 = b.cross.at(0).d1;
     } else {
-      c.twist1 = (a.cross.at(1 - h).p - a.cross.at(1).p) / h;
-      c.twist2 = (b.cross.at(h).p - b.cross.at(0).p) / h;
+      c.twist1 = (a.cross.at_by_basis(1 - h).p - a.cross.at_by_basis(1).p) / h;
+      c.twist2 = (b.cross.at_by_basis(h).p - b.cross.at_by_basis(0).p) / h;
     }
   }
 }

@@ -22,11 +22,18 @@ class UnitCurve {
   UnitCurve() = default;
   explicit UnitCurve(SplineCurve spline);
   CurvePoint at(double s) const;
+  // The same by the B-spline basis (Cox-de Boor) whatever the curve: the rounding of the research
+  // library's evaluation, which its forward-difference twists magnify 1e4 times.
+  CurvePoint at_by_basis(double s) const;
   const SplineCurve& spline() const { return spline_; }
+  // For changing control points only (the knots and weights stay).
   SplineCurve& spline() { return spline_; }
 
  private:
   SplineCurve spline_;
+  // A polynomial curve of one span on [0, 1] (every Bézier side, every network face): evaluated
+  // by de Casteljau instead of the general B-spline basis, several times faster.
+  bool bezier_ = false;
 };
 
 struct RibbonCurves {
