@@ -14,19 +14,21 @@ namespace pl {
 std::span<const Command> commands() {
   static const std::array table{
       Command{"export",
-              "FILE -o OUT.{obj,ply,off,stl} [--density N] [--scheme gregory|gb]\n"
+              "FILE -o OUT.{obj,ply,off,stl} [--density N] [--scheme S]\n"
               "                       FILE -o OUT.{step,stp,igs,iges} [--tolerance T] "
-              "[--scheme gregory|gb]",
+              "[--scheme S]",
               run_export},
-      Command{"analyze", "FILE [--density N] [--scheme gregory|gb] [--json]", run_analyze},
+      Command{"analyze", "FILE [--density N] [--scheme S] [--json]", run_analyze},
+      Command{"compare",
+              "FILE [--schemes S,S,...] [--base S] [--faces F,F,...] [--density N] [--json]",
+              run_compare},
       Command{"convert", "IN -o OUT  (.gbp <-> .json scene)", run_convert},
       Command{"render",
-              "FILE -o OUT.png [--size WxH] [--mode MODE] [--view VIEW] [--compare] "
-              "[--transparent] [--density N]",
+              "FILE -o OUT.png [--size WxH] [--mode MODE] [--view VIEW] [--compare [--schemes "
+              "S,S,...]] [--transparent] [--density N]",
               run_render},
       Command{"gbnet", "IN.gbp -o OUT.gbp [--defaults boundary|ring1] [--elevate K]", run_gbnet},
-      Command{"sample", "cube-sphere -o OUT.json [--cells K] [--scheme auto|gregory|gb]",
-              run_sample},
+      Command{"sample", "cube-sphere -o OUT.json [--cells K] [--scheme auto|S]", run_sample},
   };
   return table;
 }
@@ -46,7 +48,9 @@ void print_help(std::ostream& os) {
   os << "\nFILE is a scene (.json, see docs/scene-format.md) or a GB net (.gbp, see\n"
         "docs/gbp-format.md); the commands and their output: docs/cli.md.\n"
         "  --density N   samples per boundary curve (default 32)\n"
-        "  --scheme S    fill network faces with gregory (3- and 4-sided faces) or gb\n"
+        "  --scheme S    fill network faces with S: gregory (3- and 4-sided faces), gb,\n"
+        "                side-based, corner-based, generalized-coons, composite-ribbon,\n"
+        "                midpoint or midpoint-coons (these six: convex faces)\n"
         "Exit status: 0 success, 1 bad input (message names file and place), 2 wrong usage.\n";
 }
 

@@ -18,6 +18,7 @@ std::span<const Command> commands();
 
 int run_export(std::span<const std::string> args, std::ostream& out, std::ostream& err);
 int run_analyze(std::span<const std::string> args, std::ostream& out, std::ostream& err);
+int run_compare(std::span<const std::string> args, std::ostream& out, std::ostream& err);
 int run_convert(std::span<const std::string> args, std::ostream& out, std::ostream& err);
 int run_render(std::span<const std::string> args, std::ostream& out, std::ostream& err);
 int run_gbnet(std::span<const std::string> args, std::ostream& out, std::ostream& err);

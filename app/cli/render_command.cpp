@@ -11,6 +11,7 @@
 #include "app/cli/load_input.hpp"
 #include "app/cli/progress_line.hpp"
 #include "app/cli/work_limits.hpp"
+#include "core/analysis/compared_schemes.hpp"
 #include "core/analysis/curve_analysis.hpp"
 #include "core/base/data_error.hpp"
 #include "core/io/atomic_file.hpp"
@@ -84,8 +85,9 @@ DisplaySettings parse_settings(const Arguments& a) {
 }  // namespace
 
 int run_render(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
-  const Arguments a(args, {"-o", "--size", "--mode", "--view", "--density", "--scheme", "--range"},
-                    {"--compare", "--transparent", "--flat"});
+  const Arguments a(
+      args, {"-o", "--size", "--mode", "--view", "--density", "--scheme", "--range", "--schemes"},
+      {"--compare", "--transparent", "--flat"});
   if (a.positional().size() != 1) throw UsageError("render takes exactly one input FILE");
   const auto target = a.value("-o");
   if (!target || !ends_with_png(*target)) throw UsageError("render needs -o OUT.png");
@@ -94,6 +96,12 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
   const auto scheme = parse_scheme_option(a.value("--scheme"));
   const bool compare = a.flag("--compare");
   if (compare && scheme) throw UsageError("--compare renders both schemes; drop --scheme");
+  // --compare --schemes S,S,...: one panel per scheme (default: Gregory and GB).
+  std::vector<FaceScheme> compared{FaceScheme::Gregory, FaceScheme::GB};
+  if (const auto list = a.value("--schemes")) {
+    if (!compare) throw UsageError("--schemes goes with --compare");
+    compared = parse_scheme_list(*list, "--schemes");
+  }
   const DisplaySettings settings = parse_settings(a);
   // No --view: the default view (render/default_view.hpp), which faces a single patch's front.
   const std::optional<std::string> view = a.value("--view");
@@ -113,11 +121,10 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
   std::vector<DrawScene> draws;
   std::vector<std::string> labels;
   if (compare) {
-    for (const auto& [s, label] : {std::pair{FaceScheme::Gregory, "Gregory"},
-                                   std::pair{FaceScheme::GB, "Generalized Bézier"}}) {
+    for (FaceScheme s : compared) {
       const SceneSurfaces surfaces = evaluate_scene(scene, density, s, cache, file);
       draws.push_back(build_draw_scene(scene, surfaces, teeth));
-      labels.push_back(label);
+      labels.push_back(s == FaceScheme::GB ? "Generalized Bézier" : scheme_title(s));
     }
   } else {
     draws.push_back(

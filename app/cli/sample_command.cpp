@@ -1,4 +1,4 @@
-// `patchlab sample cube-sphere -o OUT.json [--cells K] [--scheme auto|gregory|gb]`: writes a
+// `patchlab sample cube-sphere -o OUT.json [--cells K] [--scheme S]`: writes a
 // network built from a formula (core/network/sample_networks.hpp), so that large networks for
 // trying the editor, benchmarks and CAD export need not be stored or written by hand.
 #include <string>
@@ -8,6 +8,7 @@
 #include "app/cli/commands.hpp"
 #include "core/io/scene_io.hpp"
 #include "core/network/sample_networks.hpp"
+#include "core/scene/network_edit.hpp"
 
 namespace pl {
 
@@ -23,12 +24,11 @@ int run_sample(std::span<const std::string> args, std::ostream& out, std::ostrea
   const int cells = a.integer("--cells", 4, 1, 64);
   FaceScheme scheme = FaceScheme::Auto;
   if (const auto s = a.value("--scheme")) {
-    if (*s == "gregory")
-      scheme = FaceScheme::Gregory;
-    else if (*s == "gb")
-      scheme = FaceScheme::GB;
-    else if (*s != "auto")
-      throw UsageError("--scheme takes auto, gregory or gb, got \"" + *s + "\"");
+    const auto parsed = parse_scheme_keyword(*s);
+    if (!parsed)
+      throw UsageError("--scheme takes auto or one of " + face_scheme_keywords() + ", got \"" + *s +
+                       "\"");
+    scheme = *parsed;
   }
   Scene scene;
   scene.name = "cube sphere " + std::to_string(cells) + "x" + std::to_string(cells);

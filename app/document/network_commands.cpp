@@ -4,6 +4,7 @@
 
 #include "core/base/data_error.hpp"
 #include "core/network/network_filling.hpp"
+#include "core/scene/network_edit.hpp"
 
 namespace pl {
 
@@ -187,7 +188,10 @@ void SplitEdgeCommand::apply(Scene& scene) {
     const NetworkFace& face = net.faces[f];
     const FaceScheme s = resolve_scheme(face, std::nullopt);
     label_ += "; face " + str(f) + " now has " + str(int(face.loop.size())) + " sides (" +
-              (s == FaceScheme::GB ? "GB" : "Gregory") + ")";
+              (s == FaceScheme::GB        ? std::string("GB")
+               : s == FaceScheme::Gregory ? std::string("Gregory")
+                                          : scheme_keyword(s)) +
+              ")";
     if (std::find(reset.begin(), reset.end(), f) != reset.end())
       label_ += ", its interior back at its defaults";
   }

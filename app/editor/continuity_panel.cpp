@@ -100,11 +100,11 @@ void follow_continuity(ContinuityMonitor& monitor, const SceneViews& views, cons
   if (!views.ready()) return;
   // The figures follow the fine surfaces only, once they have settled.
   std::vector<ContinuityMonitor::Input> inputs;
-  if (views.compare()) {
-    const char* labels[2] = {"Gregory filling", "GB filling"};
-    for (int i = 0; i < 2; ++i) {
+  if (views.panels() > 1) {
+    for (int i = 0; i < views.panels(); ++i) {
       if (!views.panel(i).settled()) return;
-      inputs.push_back({labels[i], &views.panel(i).fine().surfaces()});
+      inputs.push_back(
+          {scheme_title(views.setup().schemes[i]) + " filling", &views.panel(i).fine().surfaces()});
     }
   } else {
     if (!views.settled()) return;

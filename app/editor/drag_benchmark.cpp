@@ -1,12 +1,14 @@
-// `patchlab --bench-drag [FILE]`: a scripted drag of the network vertex with the most edges
-// (of FILE, or of a generated 2 x 2 quad network) in a 1280x720 window, each step a full editor
-// frame (coarse re-evaluation, upload, draw, UI, swap, glFinish). Prints
+// `patchlab --bench-drag [FILE] [--compare-schemes S,S,...]`: a scripted drag of the network
+// vertex with the most edges (of FILE, or of a generated 2 x 2 quad network) in a 1280x720
+// window, each step a full editor frame (coarse re-evaluation of every view shown, upload, draw,
+// UI, swap, glFinish); with --compare-schemes the comparison's panes are shown and followed, one
+// evaluation per pane. Prints
 //   figure editor_drag_fps, editor_frame_ms_p50, editor_frame_ms_p95,
 //          editor_eval_ms_per_drag_frame, editor_cpu_ms_per_drag_frame, editor_settle_ms,
 //          editor_first_frame_ms, editor_loaded_ms, editor_peak_rss_mb
 // where evaluation is the views' share of a drag frame (engine sync and mesh arrays), settle is
-// the time from the release to the first frame showing the fine surfaces, first frame and
-// loaded are the times from the process's launch to the first frame swapped (the progress bar)
+// the time from the release to the first frame showing the fine surfaces in every pane, first frame
+// and loaded are the times from the process's launch to the first frame swapped (the progress bar)
 // and to the first frame showing the scene, and the peak RSS is the process's high-water mark
 // after all of it: loading and the first evaluation included. Display settings are the
 // defaults (the user's preferences are not read).
@@ -98,12 +100,21 @@ int Editor::run_drag_benchmark() {
   } while (!views_.settled() && settle_frames < 100);
   const double settle = std::chrono::duration<double, std::milli>(Clock::now() - release).count();
   const EvaluatedView& view = *views_.main();
+  std::size_t coarse = 0, fine = 0;
+  for (int i = 0; i < views_.panels(); ++i) {
+    coarse += views_.panel(i).coarse().sample_count();
+    fine += views_.panel(i).fine().sample_count();
+  }
   std::printf(
-      "# drag of vertex %d, %d frames at %dx%d: %zu samples while dragging, %zu at rest (%s)\n",
-      vertex, kDragFrames, options_.width, options_.height, view.coarse().sample_count(),
-      view.fine().sample_count(), view.density_note().c_str());
+      "# drag of vertex %d, %d frames at %dx%d, %d pane(s)%s%s: %zu samples while dragging, %zu "
+      "at rest (%s)\n",
+      vertex, kDragFrames, options_.width, options_.height, views_.panels(),
+      views_.panels() > 1 ? " " : "",
+      views_.panels() > 1 ? schemes_keywords(views_.setup()).c_str() : "", coarse, fine,
+      view.density_note().c_str());
   std::printf("# mean evaluation per drag frame %.2f ms (the rest is drawing, UI and swap)\n",
               eval_ms / kDragFrames);
+  std::printf("figure editor_panes %d panes\n", views_.panels());
   std::printf("figure editor_drag_fps %.1f fps\n", kDragFrames / total);
   std::printf("figure editor_frame_ms_p50 %.2f ms\n", percentile(ms, 0.5));
   std::printf("figure editor_frame_ms_p95 %.2f ms\n", percentile(ms, 0.95));

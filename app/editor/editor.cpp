@@ -1,5 +1,6 @@
 #include "app/editor/editor.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 #include <utility>
@@ -12,6 +13,7 @@
 #include "app/editor/action_menus.hpp"
 #include "app/editor/curvature_graph_window.hpp"
 #include "app/editor/editor_windows.hpp"
+#include "app/editor/figures_table.hpp"
 #include "app/editor/logic/add_edge_tool.hpp"
 #include "app/editor/logic/add_vertex_tool.hpp"
 #include "app/editor/logic/curve_actions.hpp"
@@ -23,6 +25,7 @@
 #include "app/editor/logic/split_edge_tool.hpp"
 #include "app/editor/side_panel.hpp"
 #include "core/base/data_error.hpp"
+#include "core/scene/network_edit.hpp"
 
 namespace pl {
 
@@ -46,6 +49,11 @@ Editor::Editor(GlWindow& window, EditorOptions options, DocumentSession session)
   // The benchmark measures the default settings, whatever the user chose.
   prefs_ =
       prefs_file_ && !options_.bench_drag ? load_preferences(*prefs_file_) : default_preferences();
+  if (!options_.compare_schemes.empty()) {
+    prefs_.compare_schemes = options_.compare_schemes;
+    // The first pane is the base.
+    prefs_.compare_base = scheme_keyword(compare_setup_from(options_.compare_schemes, "").base);
+  }
   ui_scale_ = window_.follow_ui_scale(prefs_.ui_scale);
   tools_.add(std::make_unique<SelectTool>());
   tools_.add(std::make_unique<AddVertexTool>());
@@ -84,11 +92,19 @@ EditorLayout Editor::layout() const {
   // The legends' column takes its width from the view, so no legend covers a panel.
   l.legends =
       int(view_legends(prefs_.display, views_.compare(), views_.difference, {-1, 1}, 1).size());
+  // The comparison's figures under its panes: a row per face and scheme.
+  if (views_.panels() > 1) {
+    const auto& result = figures_.result();
+    int rows = 0;
+    if (result)
+      for (const FaceFigures& f : result->faces) rows += int(f.schemes.size());
+    l.table_height = figures_table_height(std::max(rows, 1), ui_scale_);
+  }
   return l;
 }
 
 Box Editor::scene_box() const {
-  return views_.ready() ? views_.main()->shown().draw().bounds() : Box();
+  return views_.ready() ? views_.panel(0).shown().draw().bounds() : Box();
 }
 
 PickScene Editor::pick_scene(int panel, std::vector<SelectionItem>& items) const {
@@ -140,6 +156,7 @@ void Editor::follow_document() {
   if (views_.poll()) {
     // The worker's evaluation is uploaded: the first frame of the scene follows.
     if (!loaded_ms_) loaded_ms_ = ms_since_launch();
+    if (!views_.compare_error().empty()) status_.say("cannot compare: " + views_.compare_error());
     nav_.unframe();
     for (ScenePicker& p : pickers_) p.reset();
   }
@@ -147,7 +164,7 @@ void Editor::follow_document() {
   try {
     if (views_.follow(doc, prefs_.display)) status_.eval_ms = views_.last_eval_ms();
     // Each face's density from its size on screen, within the views' triangle budgets.
-    const ViewRect rect = layout().panels(views_.compare())[0];
+    const ViewRect rect = layout().panels(views_.panels())[0];
     views_.fit_to_screen(
         [&](const Vec3& c, double r) { return 2 * r / world_per_pixel(nav_.camera(), rect, c); },
         doc);
@@ -155,6 +172,7 @@ void Editor::follow_document() {
   } catch (const DataError& e) {
     status_.say(e.what());
   }
+  follow_figures();
   if (doc.revision() != followed_revision_) {
     followed_revision_ = doc.revision();
     follow_structure();  // an undo or a topology edit may have removed or renumbered objects
@@ -163,6 +181,33 @@ void Editor::follow_document() {
   // more than the drag itself.
   follow_continuity(continuity_, views_, doc);
   curve_marks_.follow(doc.scene().curves);
+}
+
+uint64_t Editor::doc_revision() const {
+  return session_.doc().revision();
+}
+
+void Editor::follow_figures() {
+  figures_.poll();
+  if (!views_.ready() || views_.panels() <= 1) return;
+  const Document& doc = session_.doc();
+  // Off the hot path: nothing while a drag runs (its cores are the drag's), the figures of the
+  // state shown once every pane has settled.
+  if (doc.dragging()) {
+    figures_.cancel();
+    return;
+  }
+  for (int i = 0; i < views_.panels(); ++i)
+    if (!views_.panel(i).settled()) return;
+  FiguresKey key;
+  key.revision = doc.revision();
+  key.faces = figures_faces(*doc.scene().network, selection_.of_kind(SelectionItem::Kind::Face));
+  for (FaceScheme s : views_.setup().schemes)
+    if (std::find(key.schemes.begin(), key.schemes.end(), s) == key.schemes.end())
+      key.schemes.push_back(s);
+  key.base = views_.setup().base;
+  key.density = prefs_.fine_density;
+  if (!key.faces.empty()) figures_.request(doc.scene(), key);
 }
 
 NetFocus Editor::net_focus() const {
@@ -237,11 +282,11 @@ void Editor::draw_interface(const ColorRange& range) {
   figures.coarse = views_.ready() && !views_.settled();
   figures.selected = selection_.size();
   figures.tool = tools_.active().name();
-  if (views_.ready()) figures.drawing = views_.main()->drawing_note();
+  if (views_.ready()) figures.drawing = views_.panel(0).drawing_note();
   if (mouse_.under.item) figures.under = describe(*mouse_.under.item);
   if (work_plane_.shown && mouse_.panel >= 0) {
     const ImGuiIO& io = ImGui::GetIO();
-    const Ray ray = window_ray(nav_.camera(), l.panels(views_.compare())[mouse_.panel],
+    const Ray ray = window_ray(nav_.camera(), l.panels(views_.panels())[mouse_.panel],
                                Vec2(io.MousePos.x, io.MousePos.y));
     if (const auto p = work_plane_.hit(nav_.camera(), ray)) {
       char b[128];
@@ -253,16 +298,20 @@ void Editor::draw_interface(const ColorRange& range) {
   draw_status_bar(status_, figures, ui_scale_);
 
   if (views_.ready())
-    draw_legend_column(l.legend_column(),
-                       view_legends(prefs_.display, views_.compare(), views_.difference, range,
-                                    views_.difference_range()),
-                       ui_scale_);
+    draw_legend_column(
+        l.legend_column(),
+        view_legends(prefs_.display, views_.compare(), views_.difference, range,
+                     views_.difference_range(), scheme_short_title(views_.setup().base)),
+        ui_scale_);
+  if (views_.ready() && views_.panels() > 1)
+    draw_figures_table(l.table_strip(), figures_,
+                       figures_.busy() || figures_.result_key().revision != doc_revision());
   if (prefs_.show_probe && mouse_.probe && views_.ready()) {
     const auto& meshes = views_.panel(mouse_.panel).shown().draw().surfaces;
     const int s = mouse_.probe->surface;
     std::optional<double> distance;
-    if (views_.showing_difference() && mouse_.panel == 1)
-      distance = views_.difference_field().distance_at(*mouse_.probe);
+    if (const DifferenceField* field = views_.difference_field(mouse_.panel))
+      distance = field->distance_at(*mouse_.probe);
     draw_probe_window(*mouse_.probe, s >= 0 && s < int(meshes.size()) ? meshes[s].name : "",
                       distance, ui_scale_);
   }
@@ -298,7 +347,7 @@ void Editor::frame() {
   follow_document();
   if (views_.ready() && !nav_.framed()) open_view();
   const EditorLayout l = layout();
-  nav_.follow_panel(l.display, views_.compare(), l.panels(views_.compare())[0].width);
+  nav_.follow_panel(l.display, views_.panels(), l.panels(views_.panels())[0].width);
   ViewportFrame f;
   f.window = window_.handle();
   f.renderer = &renderer_;
@@ -311,7 +360,7 @@ void Editor::frame() {
   f.continuity = &continuity_;
   f.curve_marks = &curve_marks_;
   f.viewport = l.viewport();
-  f.panels = l.panels(views_.compare());
+  f.panels = l.panels(views_.panels());
   f.hover_panel = mouse_.panel;
   f.hover = &mouse_.under;
   f.probe = &mouse_.probe;

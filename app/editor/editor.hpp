@@ -17,6 +17,7 @@
 // (what scripts and tests read back), drag_benchmark.cpp, pick_benchmark.cpp.
 #pragma once
 
+#include <array>
 #include <chrono>
 #include <filesystem>
 #include <map>
@@ -31,6 +32,7 @@
 #include "app/editor/logic/actions.hpp"
 #include "app/editor/logic/autosave.hpp"
 #include "app/editor/logic/cad_export_job.hpp"
+#include "app/editor/logic/compare_figures.hpp"
 #include "app/editor/logic/continuity_monitor.hpp"
 #include "app/editor/logic/curve_marks.hpp"
 #include "app/editor/logic/document_session.hpp"
@@ -60,8 +62,9 @@ struct EditorOptions {
   // messages): what the authoring end-to-end test waits for and clicks on.
   bool debug_state = false;
   int width = 1440, height = 900;
-  bool compare = false;     // start split: Gregory | GB
-  bool difference = false;  // and GB coloured by its distance to Gregory (implies compare)
+  bool compare = false;         // start split: Gregory | GB
+  bool difference = false;      // and GB coloured by its distance to Gregory (implies compare)
+  std::string compare_schemes;  // the panes' schemes ("gregory,gb,..."), the first the base
   std::optional<std::filesystem::path> screenshot;  // write one, then quit (scripts, docs)
 };
 
@@ -105,6 +108,9 @@ class Editor {
   PickScene pick_scene(int panel, std::vector<SelectionItem>& items) const;
   ToolContext tool_context();
   void set_compare(bool on);
+  // The comparison's figures table: asked for once the panes settle (compare_figures.hpp).
+  void follow_figures();
+  uint64_t doc_revision() const;
 
   // editor_actions.cpp
   void register_actions();
@@ -174,7 +180,7 @@ class Editor {
   SceneViews views_;
   ViewNavigator nav_;
   Selection selection_;
-  ScenePicker pickers_[2];  // one per panel: each shows its own filling
+  std::array<ScenePicker, kMaxComparePanes> pickers_;  // one per panel: each its own filling
   ToolBox tools_;
   WorkPlane work_plane_;
   ContinuityMonitor continuity_;
@@ -185,6 +191,7 @@ class Editor {
   Autosave autosave_;
   CadExportJob cad_job_;
   ViewportPainter painter_;
+  CompareFigures figures_;
   PointKeyImage help_key_;  // F1's key of the control points' symbols
   Mouse mouse_;
   std::optional<ContextTarget> context_;           // the right-click menu is open on this

@@ -27,7 +27,7 @@ constexpr ContextSet kOnObjects =
 void Editor::register_actions() {
   ActionRegistry& r = actions_;
   auto has_selection = [this] { return !selection_.empty(); };
-  auto aspect = [this] { return layout().panels(views_.compare())[0].aspect(); };
+  auto aspect = [this] { return layout().panels(views_.panels())[0].aspect(); };
 
   // File
   r.add(make_action("file.new", "File", "New", {"Ctrl+N"}, "new empty scene", [this] {
@@ -196,14 +196,15 @@ void Editor::register_actions() {
   ortho.checked = [this] { return nav_.camera().orthographic; };
   r.add(std::move(ortho));
   Action compare =
-      make_action("view.compare", "View", "Compare Gregory | GB", {"C"},
-                  "compare Gregory | GB side by side", [this] { set_compare(!views_.compare()); });
+      make_action("view.compare", "View", "Compare Schemes", {"C"},
+                  "the network filled by each chosen scheme side by side (Display panel)",
+                  [this] { set_compare(!views_.compare()); });
   compare.separator_before = true;
   compare.checked = [this] { return views_.compare(); };
   compare.enabled = [this] { return session_.doc().scene().network.has_value(); };
   r.add(std::move(compare));
   Action difference = make_action("view.difference", "View", "Difference Colouring", {"D"},
-                                  "colour GB by its distance to Gregory (comparison)",
+                                  "colour every pane by its distance to the base pane (comparison)",
                                   [this] { views_.difference = !views_.difference; });
   difference.checked = [this] { return views_.difference; };
   difference.enabled = [this] { return views_.compare(); };

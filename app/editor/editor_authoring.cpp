@@ -30,7 +30,7 @@ void Editor::draw_tool_feedback() {
   if (!views_.ready()) return;
   ToolContext ctx = tool_context();
   const ToolPreview preview = tools_.active().preview(ctx);
-  const auto rects = layout().panels(views_.compare());
+  const auto rects = layout().panels(views_.panels());
   const ImGuiIO& io = ImGui::GetIO();
   const Vec2 mouse(io.MousePos.x, io.MousePos.y);
   // The tangent-plane discs and their knobs belong to the select tool, which drags the knobs.

@@ -44,7 +44,7 @@ namespace pl {
 
 void Editor::report_debug_items() {
   if (!debugging() || debug_.positions || !views_.ready()) return;
-  const auto rects = layout().panels(views_.compare());
+  const auto rects = layout().panels(views_.panels());
   const Camera& camera = nav_.camera();
   int wx = 0, wy = 0;
   glfwGetWindowPos(window_.handle(), &wx, &wy);
@@ -147,7 +147,7 @@ void Editor::report_state() {
   const Document& doc = session_.doc();
   if (held || frames_ < 3 || !views_.ready() || !views_.settled() || doc.dragging()) return;
   const Scene& scene = doc.scene();
-  const auto rects = layout().panels(views_.compare());
+  const auto rects = layout().panels(views_.panels());
   const Camera& camera = nav_.camera();
   const Network none;
   const Network& net = scene.network ? *scene.network : none;

@@ -123,7 +123,7 @@ void Editor::export_file(const fs::path& path) {
   }
   if (!views_.ready()) return;
   try {
-    export_meshes(views_.main()->fine().draw().surfaces, path);
+    export_meshes(views_.own(session_.doc()).fine().draw().surfaces, path);
     status_.say("exported " + path.filename().string());
   } catch (const std::exception& e) {
     dialogs_.show_error("Cannot export", path.string() + ": " + e.what());
@@ -138,20 +138,26 @@ void Editor::take_screenshot(const fs::path& path) {
     r.height = prefs_.screenshot_height;
     r.transparent = prefs_.screenshot_transparent;
     const ColorRange range = views_.colour_range(prefs_.display, session_.doc().revision());
+    const CompareSetup& setup = views_.setup();
     for (int i = 0; i < views_.panels(); ++i) {
       ShotPanel p{&views_.panel(i).gpu(), prefs_.display, range, ""};
-      if (views_.compare()) p.label = i == 0 ? "Gregory" : "Generalized Bezier";
-      if (views_.showing_difference() && i == 1) {
-        const double m = views_.difference_range();
-        p.scene = views_.difference_scene(session_.doc().revision());
+      if (views_.panels() > 1) p.label = scheme_title(setup.schemes[i]);
+      if (views_.shows_distance(i)) {
+        p.scene = views_.difference_scene(session_.doc().revision(), i);
         p.settings.base = BaseMode::Curvature;
         p.settings.curvature = CurvatureKind::Mean;
-        p.range = {-m, m};
-        p.label = "GB: distance to Gregory";
-        r.legend_title = "distance";
-        r.legend_range = p.range;
+        p.label = scheme_short_title(setup.schemes[i]) + ": distance to " +
+                  scheme_short_title(setup.base);
       }
       r.panels.push_back(p);
+    }
+    // One symmetric range for every pane's distances, known once all their fields are computed.
+    if (views_.showing_difference()) {
+      const double m = views_.difference_range();
+      for (int i = 0; i < views_.panels(); ++i)
+        if (views_.shows_distance(i)) r.panels[i].range = {-m, m};
+      r.legend_title = "distance to " + scheme_short_title(setup.base);
+      r.legend_range = {-m, m};
     }
     if (r.legend_title.empty() && prefs_.display.base == BaseMode::Curvature) {
       r.legend_title = std::string(curvature_name(prefs_.display.curvature)) + " curvature";
@@ -243,11 +249,11 @@ std::vector<const DrawScene*> Editor::shown_scenes() const {
 }
 
 void Editor::open_view() {
-  nav_.open_view(shown_scenes(), layout().panels(views_.compare())[0].aspect());
+  nav_.open_view(shown_scenes(), layout().panels(views_.panels())[0].aspect());
 }
 
 void Editor::frame_shown() {
-  nav_.frame_tightly(shown_scenes(), layout().panels(views_.compare())[0].aspect());
+  nav_.frame_tightly(shown_scenes(), layout().panels(views_.panels())[0].aspect());
 }
 
 }  // namespace pl

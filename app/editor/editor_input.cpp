@@ -146,7 +146,7 @@ void Editor::handle_mouse() {
   ImGuiIO& io = ImGui::GetIO();
   const Vec2 mouse(io.MousePos.x, io.MousePos.y);
   const EditorLayout l = layout();
-  const auto rects = l.panels(views_.compare());
+  const auto rects = l.panels(views_.panels());
   ToolContext ctx = tool_context();
 
   // A tool that took the press owns the mouse until the release, wherever the cursor goes; no
@@ -196,7 +196,7 @@ void Editor::handle_mouse() {
     return;
   }
 
-  mouse_.panel = l.panel_at(mouse, views_.compare());
+  mouse_.panel = l.panel_at(mouse, views_.panels());
   mouse_.under = {};
   mouse_.probe.reset();
   if (mouse_.panel < 0 || io.WantCaptureMouse || !views_.ready()) {

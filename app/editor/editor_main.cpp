@@ -1,15 +1,18 @@
 #include "app/editor/editor_main.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
 #include <optional>
 
 #include "app/editor/editor.hpp"
 #include "app/editor/logic/busy_core.hpp"
+#include "app/editor/logic/compare_layout.hpp"
 #include "app/editor/logic/editor_paths.hpp"
 #include "app/editor/logic/grid_scene.hpp"
 #include "app/editor/logic/selection.hpp"
 #include "app/editor/pick_benchmark.hpp"
+#include "core/analysis/compared_schemes.hpp"
 #include "core/base/data_error.hpp"
 
 namespace pl {
@@ -57,6 +60,17 @@ int run_editor(std::span<const std::string> args, std::ostream& out, std::ostrea
       o.compare = true;
     } else if (a == "--difference") {
       o.compare = o.difference = true;
+    } else if (a == "--compare-schemes") {
+      // The comparison's panes (2, 3, 4 or 6 schemes), the first one the base.
+      const std::string* v = value();
+      const CompareSetup setup = v ? compare_setup_from(*v, "") : CompareSetup{};
+      if (!v || schemes_keywords(setup) != *v) {
+        err << "patchlab: --compare-schemes takes 2, 3, 4 or 6 of " << comparable_scheme_keywords()
+            << ", comma-separated\n";
+        return 2;
+      }
+      o.compare = true;
+      o.compare_schemes = *v;
     } else if (a == "--screenshot") {
       const std::string* v = value();
       if (!v) {
@@ -72,7 +86,8 @@ int run_editor(std::span<const std::string> args, std::ostream& out, std::ostrea
       }
     } else if (a.rfind("--", 0) == 0) {
       err << "patchlab: unknown editor option " << a << "\n"
-          << "usage: patchlab [FILE] [--size WxH] [--compare] [--difference] [--screenshot "
+          << "usage: patchlab [FILE] [--size WxH] [--compare] [--compare-schemes S,S,...] "
+             "[--difference] [--screenshot "
              "OUT.png] "
              "[--bench-drag [--busy]] [--bench-pick] [--debug-point NAME]... [--debug-state]\n";
       return 2;
@@ -87,7 +102,9 @@ int run_editor(std::span<const std::string> args, std::ostream& out, std::ostrea
     err << "patchlab: --busy goes with --bench-drag\n";
     return 2;
   }
-  if (o.bench_drag && !args.empty() && args.size() - busy <= 2) o.width = 1280, o.height = 720;
+  // The benchmark's window unless --size says otherwise.
+  const bool sized = std::find(args.begin(), args.end(), "--size") != args.end();
+  if (o.bench_drag && !sized) o.width = 1280, o.height = 720;
 
   if (o.bench_pick) return run_pick_benchmark(o.file, out, err);
 

@@ -1,9 +1,11 @@
 #include "app/editor/scene_views.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
 #include "core/base/data_error.hpp"
+#include "core/scene/network_edit.hpp"
 
 namespace pl {
 
@@ -15,11 +17,11 @@ SceneViews::~SceneViews() {
 void SceneViews::rebuild(const Document& doc, const Preferences& prefs, bool compare,
                          std::chrono::milliseconds wait) {
   main_.reset();
-  compare_views_[0].reset();
-  compare_views_[1].reset();
+  compare_views_.clear();
   error_.clear();
-  field_.reset();
-  difference_gpu_.reset();
+  compare_error_.clear();
+  fields_.clear();
+  difference_gpu_.clear();
   range_key_ = {};
   compare_ = false;
   if (worker_.valid()) abandoned_.push_back(std::move(worker_));  // its result is dropped
@@ -28,6 +30,7 @@ void SceneViews::rebuild(const Document& doc, const Preferences& prefs, bool com
   });
   auto job = std::make_shared<Job>();
   job->compare = compare && doc.scene().network.has_value();
+  job->setup = compare_setup_from(prefs.compare_schemes, prefs.compare_base);
   job_ = job;
   const DisplaySettings& d = prefs.display;
   ViewRequest request;
@@ -40,9 +43,10 @@ void SceneViews::rebuild(const Document& doc, const Preferences& prefs, bool com
   // up from the evaluated revision).
   worker_ = std::async(std::launch::async, [job, request, source, scene = doc.scene(),
                                             revision = doc.revision()]() mutable {
-    const std::size_t count = job->compare ? 3 : 1;
-    const std::optional<FaceScheme> schemes[3] = {std::nullopt, FaceScheme::Gregory,
-                                                  FaceScheme::GB};
+    std::vector<std::optional<FaceScheme>> schemes{std::nullopt};
+    if (job->compare)
+      for (FaceScheme s : job->setup.schemes) schemes.push_back(s);
+    const std::size_t count = schemes.size();
     try {
       for (std::size_t i = 0; i < count; ++i) {
         request.scheme = schemes[i];
@@ -55,12 +59,16 @@ void SceneViews::rebuild(const Document& doc, const Preferences& prefs, bool com
         std::lock_guard lock(job->mutex);
         job->views.push_back(std::move(v));
       }
-    } catch (const DataError& e) {
-      std::lock_guard lock(job->mutex);
-      job->error = e.what();
     } catch (const std::exception& e) {
       std::lock_guard lock(job->mutex);
-      job->error = e.what();
+      // A pane whose scheme cannot fill the network (a ribbon scheme on a concave face) takes
+      // the comparison away, not the scene's own view.
+      const std::size_t failed = job->views.size();
+      if (failed == 0)
+        job->error = e.what();
+      else
+        job->pane_error = "pane " + std::to_string(failed) + " (" +
+                          scheme_keyword(*schemes[failed]) + "): " + e.what();
     }
   });
   if (worker_.wait_for(wait) == std::future_status::ready) poll();
@@ -78,9 +86,13 @@ bool SceneViews::poll() {
     return true;
   }
   main_ = std::make_unique<EvaluatedView>(std::move(job->views[0]));
-  if (job->compare && job->views.size() == 3) {
-    compare_views_[0] = std::make_unique<EvaluatedView>(std::move(job->views[1]));
-    compare_views_[1] = std::make_unique<EvaluatedView>(std::move(job->views[2]));
+  compare_error_ = job->pane_error;
+  if (job->compare && job->views.size() == job->setup.schemes.size() + 1) {
+    for (std::size_t i = 1; i < job->views.size(); ++i)
+      compare_views_.push_back(std::make_unique<EvaluatedView>(std::move(job->views[i])));
+    setup_ = job->setup;
+    fields_.resize(compare_views_.size());
+    difference_gpu_.resize(compare_views_.size());
     compare_ = true;
   }
   return true;
@@ -107,7 +119,9 @@ bool SceneViews::follow(const Document& doc, const DisplaySettings& d) {
     v.configure_combs(d.combs, d.comb_teeth);
     changed |= v.follow(doc);
   };
-  if (main_) follow_one(*main_);
+  // While comparing, the scene's own view is not shown: it is not followed either (leaving the
+  // comparison evaluates afresh), so a drag frame costs one evaluation per pane.
+  if (main_ && !compare_) follow_one(*main_);
   if (compare_)
     for (auto& v : compare_views_) follow_one(*v);
   if (changed)
@@ -118,27 +132,39 @@ bool SceneViews::follow(const Document& doc, const DisplaySettings& d) {
 
 bool SceneViews::fit_to_screen(const std::function<double(const Vec3&, double)>& pixels,
                                const Document& doc) {
-  bool changed = main_ && main_->fit_to_screen(pixels, doc);
+  bool changed = main_ && !compare_ && main_->fit_to_screen(pixels, doc);
   if (compare_)
     for (auto& v : compare_views_) changed |= v->fit_to_screen(pixels, doc);
   return changed;
 }
 
 void SceneViews::show_net(const NetFocus& focus, double point_px, const Document& doc) {
-  if (main_) main_->show_net(focus, point_px, doc);
+  if (main_ && !compare_) main_->show_net(focus, point_px, doc);
   if (compare_)
     for (auto& v : compare_views_) v->show_net(focus, point_px, doc);
 }
 
+const EvaluatedView& SceneViews::own(const Document& doc) {
+  main_->follow(doc);
+  return *main_;
+}
+
+bool SceneViews::settled() const {
+  if (!main_ || (!compare_ && !main_->settled())) return false;
+  for (const auto& v : compare_views_)
+    if (!v->settled()) return false;
+  return true;
+}
+
 const EvaluatedView& SceneViews::panel(int i) const {
-  if (compare_ && i >= 0 && i < 2) return *compare_views_[i];
+  if (compare_ && i >= 0 && i < panels()) return *compare_views_[i];
   return *main_;
 }
 
 ColorRange SceneViews::colour_range(const DisplaySettings& d, uint64_t revision) {
   if (d.range) return *d.range;
   if (!main_ || d.base != BaseMode::Curvature) return range_;
-  const RangeKey key{revision, settled(), compare_, d.curvature, d.range_percentile};
+  const RangeKey key{revision, settled(), panels(), d.curvature, d.range_percentile};
   if (key == range_key_) return range_;
   range_key_ = key;
   std::vector<const SurfaceMesh*> meshes;
@@ -148,16 +174,40 @@ ColorRange SceneViews::colour_range(const DisplaySettings& d, uint64_t revision)
   return range_;
 }
 
-const GpuScene* SceneViews::difference_scene(uint64_t revision) {
-  if (!compare_) return nullptr;
-  const uint64_t key = revision * 2 + (compare_views_[1]->settled() ? 1 : 0);
-  if (field_.follow(compare_views_[0]->shown().draw(), compare_views_[1]->shown().draw(), key)) {
-    if (!difference_gpu_)
-      difference_gpu_ = std::make_unique<GpuScene>(field_.scene());
+const GpuScene* SceneViews::difference_scene(uint64_t revision, int panel) {
+  if (!shows_distance(panel)) return nullptr;
+  const EvaluatedView& base = *compare_views_[setup_.base_pane()];
+  const EvaluatedView& view = *compare_views_[panel];
+  const uint64_t key = revision * 2 + (view.settled() ? 1 : 0);
+  if (fields_[panel].follow(base.shown().draw(), view.shown().draw(), key)) {
+    if (!difference_gpu_[panel])
+      difference_gpu_[panel] = std::make_unique<GpuScene>(fields_[panel].scene());
     else
-      difference_gpu_->update(field_.scene());
+      difference_gpu_[panel]->update(fields_[panel].scene());
   }
-  return difference_gpu_.get();
+  return difference_gpu_[panel].get();
+}
+
+void SceneViews::set_base(FaceScheme base) {
+  if (std::find(setup_.schemes.begin(), setup_.schemes.end(), base) == setup_.schemes.end()) return;
+  setup_.base = base;
+  for (DifferenceField& f : fields_) f.reset();
+}
+
+double SceneViews::difference_max() const {
+  double m = 0;
+  for (int i = 0; i < int(fields_.size()); ++i)
+    if (shows_distance(i)) m = std::max(m, fields_[i].max_abs());
+  return m;
+}
+
+double SceneViews::difference_range() const {
+  const double m = difference_max();
+  return m > 0 ? m : 1e-12;
+}
+
+const DifferenceField* SceneViews::difference_field(int panel) const {
+  return shows_distance(panel) ? &fields_[panel] : nullptr;
 }
 
 }  // namespace pl

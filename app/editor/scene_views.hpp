@@ -1,6 +1,9 @@
-// The evaluated fillings the editor shows: the scene's own (always), and for the comparison its
-// all-Gregory and all-GB fillings side by side, each an EvaluatedView (two densities with their
-// GPU copies); and the GPU copy of the comparison's difference colouring. Needs a current GL
+// The evaluated fillings the editor shows: the scene's own (always), and for the comparison one
+// filling per pane, every face filled by the pane's scheme where the face takes it
+// (compare_layout.hpp: 2, 3, 4 or 6 panes of any schemes), each an EvaluatedView (two densities
+// with their GPU copies) that follows every edit incrementally; and the GPU copies of the
+// comparison's difference colouring (every pane but the base's, coloured by its distance to the
+// base pane's filling). Needs a current GL
 // context. A scene that cannot be evaluated leaves no view and an error() to show instead.
 // Evaluation runs on a worker thread (a 1,536-face network takes seconds): the window keeps
 // repainting and shows the progress; the upload happens on the GL thread in poll().
@@ -17,6 +20,7 @@
 
 #include "app/document/document.hpp"
 #include "app/editor/evaluated_view.hpp"
+#include "app/editor/logic/compare_layout.hpp"
 #include "app/editor/logic/difference_field.hpp"
 #include "app/editor/logic/preferences.hpp"
 
@@ -30,8 +34,9 @@ class SceneViews {
   SceneViews& operator=(const SceneViews&) = delete;
 
   // Evaluates the document afresh on a worker thread (compare is honoured only for a scene
-  // with a network); until poll() takes the result the views are not ready() and loading()
-  // holds. Waits up to `wait` for the worker, so a small scene is shown in the same frame.
+  // with a network; its panes are prefs' compare_schemes); until poll() takes the result the views
+  // are not ready() and loading() holds. Waits up to `wait` for the worker, so a small scene is
+  // shown in the same frame.
   void rebuild(const Document& doc, const Preferences& prefs, bool compare,
                std::chrono::milliseconds wait = std::chrono::milliseconds(150));
   // Takes the worker's result when it is there: uploads it (the GL context's thread) and makes
@@ -55,13 +60,24 @@ class SceneViews {
 
   bool ready() const { return main_ != nullptr; }
   const std::string& error() const { return error_; }
+  // Why the comparison asked for is not shown (a pane's scheme cannot fill the network; the
+  // scene's own view is), or "".
+  const std::string& compare_error() const { return compare_error_; }
   // Comparing, or evaluating the comparison.
   bool compare() const { return compare_ || (job_ && job_->compare); }
-  int panels() const { return compare_ ? 2 : 1; }
+  int panels() const { return compare_ ? int(compare_views_.size()) : 1; }
+  // The panes' schemes and base (meaningful while compare()).
+  const CompareSetup& setup() const { return setup_; }
+  // Another base among the panes' schemes: the distances follow, nothing is re-evaluated.
+  void set_base(FaceScheme base);
   // The view drawn in panel i (the main view when not comparing). ready() must hold.
   const EvaluatedView& panel(int i) const;
+  // The scene's own filling; while comparing it is not followed (not shown): own() brings it
+  // up to the document first (an export while comparing). Throws DataError like follow().
   const EvaluatedView* main() const { return main_.get(); }
-  bool settled() const { return main_ && main_->settled(); }
+  const EvaluatedView& own(const Document& doc);
+  // Every view shown is at its fine density (after a drag: all panes exact).
+  bool settled() const;
   double last_eval_ms() const { return last_eval_ms_; }
 
   // The curvature colour range common to all panels (equal colours mean equal curvature), for
@@ -70,15 +86,23 @@ class SceneViews {
   // curvature modes use it; others get a placeholder without the cost.
   ColorRange colour_range(const DisplaySettings& display, uint64_t revision);
 
-  // The comparison's difference colouring (GB coloured by its distance to Gregory).
+  // The comparison's difference colouring (every pane but the base's coloured by its distance to
+  // the base pane's filling).
   bool difference = false;
   bool showing_difference() const { return compare_ && difference; }
-  // The GPU copy of the difference colouring for this revision (recomputed when the document or
-  // the densities shown changed); null when not comparing.
-  const GpuScene* difference_scene(uint64_t revision);
-  double difference_range() const { return field_.range(); }
-  double difference_max() const { return field_.max_abs(); }
-  const DifferenceField& difference_field() const { return field_; }  // the probe reads it
+  // Whether pane `panel` shows distances (not the base pane).
+  bool shows_distance(int panel) const {
+    return showing_difference() && panel >= 0 && panel < panels() && panel != setup_.base_pane();
+  }
+  // The GPU copy of pane `panel`'s difference colouring for this revision (recomputed when the
+  // document or the densities shown changed); null when that pane shows no distances.
+  const GpuScene* difference_scene(uint64_t revision, int panel);
+  // One symmetric range for every pane's distances (the largest |distance| of any), and that
+  // largest distance: from the fields last computed.
+  double difference_range() const;
+  double difference_max() const;
+  // The probe reads it; null for a pane without distances.
+  const DifferenceField* difference_field(int panel) const;
 
  private:
   // The evaluation on the worker: progress written there, read here.
@@ -86,29 +110,33 @@ class SceneViews {
     std::mutex mutex;
     double fraction = 0;
     std::string stage = "reading";
-    std::vector<ViewEvaluation> views;  // main, then Gregory and GB when comparing
+    std::vector<ViewEvaluation> views;  // main, then one per pane when comparing
     std::string error;
+    std::string pane_error;  // the first pane that could not be evaluated, and why
     bool compare = false;
+    CompareSetup setup;
   };
   std::shared_ptr<Job> job_;
   std::future<void> worker_;
   std::vector<std::future<void>> abandoned_;  // replaced before they finished
 
   std::unique_ptr<EvaluatedView> main_;
-  std::unique_ptr<EvaluatedView> compare_views_[2];  // Gregory, GB
+  std::vector<std::unique_ptr<EvaluatedView>> compare_views_;  // one per pane
+  CompareSetup setup_;
   bool compare_ = false;
-  std::string error_;
+  std::string error_, compare_error_;
   double last_eval_ms_ = 0;
-  DifferenceField field_;
+  std::vector<DifferenceField> fields_;  // one per pane (the base pane's stays empty)
   struct RangeKey {
     uint64_t revision = UINT64_MAX;
-    bool settled = false, compare = false;
+    bool settled = false;
+    int panels = 1;
     CurvatureKind kind = CurvatureKind::Mean;
     double percentile = 0;
     bool operator==(const RangeKey&) const = default;
   } range_key_;
   ColorRange range_{-1, 1};
-  std::unique_ptr<GpuScene> difference_gpu_;
+  std::vector<std::unique_ptr<GpuScene>> difference_gpu_;  // one per pane
 };
 
 }  // namespace pl

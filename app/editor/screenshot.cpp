@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "app/editor/logic/compare_layout.hpp"
 #include "render/legend.hpp"
 #include "render/offscreen_target.hpp"
 #include "render/text.hpp"
@@ -26,9 +27,12 @@ Image render_screenshot(const SceneRenderer& renderer, const ShotRequest& r) {
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   const int n = static_cast<int>(r.panels.size());
+  // The panes as the window lays them out (rows of up to three), top-left origin.
+  const std::vector<ViewRect> rects = pane_rects({0, 0, double(r.width), double(r.height)}, n);
   for (int i = 0; i < n; ++i) {
-    const int x0 = r.width * i / n, x1 = r.width * (i + 1) / n;
-    Viewport v{x0, 0, x1 - x0, r.height, std::max(0.5, r.height / kReferenceHeight)};
+    const ViewRect& p = rects[i];
+    Viewport v{int(p.x), int(r.height - p.y - p.height), int(p.width), int(p.height),
+               std::max(0.5, p.height / kReferenceHeight)};
     DisplaySettings s = r.panels[i].settings;
     s.transparent = r.transparent;
     glEnable(GL_SCISSOR_TEST);
@@ -42,8 +46,8 @@ Image render_screenshot(const SceneRenderer& renderer, const ShotRequest& r) {
   const int scale = legend_scale(r.width, r.height);
   for (int i = 0; i < n; ++i)
     if (!r.panels[i].label.empty())
-      draw_text(image, r.width * i / n + 8 * scale, 8 * scale, r.panels[i].label, scale + 1,
-                {0.13f, 0.14f, 0.17f});
+      draw_text(image, int(rects[i].x) + 8 * scale, int(rects[i].y) + 8 * scale, r.panels[i].label,
+                scale + 1, {0.13f, 0.14f, 0.17f});
   if (!r.legend_title.empty()) draw_legend(image, r.legend_range, r.legend_title, scale);
   return image;
 }

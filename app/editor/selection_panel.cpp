@@ -7,12 +7,14 @@
 
 #include <cmath>
 #include <cstring>
+#include <string>
 
 #include "app/document/network_commands.hpp"
 #include "app/editor/logic/interior_actions.hpp"
 #include "app/editor/logic/plane_handles.hpp"
 #include "app/editor/logic/selection_properties.hpp"
 #include "app/editor/side_panel.hpp"
+#include "core/scene/network_edit.hpp"
 
 namespace pl {
 
@@ -51,6 +53,29 @@ void scheme_row(const SidePanel& p) {
     ImGui::SameLine();
   }
   ImGui::NewLine();
+  // The ribbon-based transfinite schemes, too many for radio buttons: one combo, showing the one
+  // all selected faces share.
+  ImGui::TextDisabled("transfinite");
+  ImGui::SameLine(ImGui::GetFontSize() * 6);
+  std::string current = "-";
+  for (FaceScheme s : all_face_schemes())
+    if (const Action* a =
+            is_ribbon_scheme(s) ? p.actions.find("face.scheme." + scheme_keyword(s)) : nullptr;
+        a && a->checked && a->checked())
+      current = a->label;
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 11);
+  if (ImGui::BeginCombo("##transfinite-scheme", current.c_str())) {
+    for (FaceScheme s : all_face_schemes()) {
+      if (!is_ribbon_scheme(s)) continue;
+      const std::string id = "face.scheme." + scheme_keyword(s);
+      const Action* a = p.actions.find(id);
+      if (!a) continue;
+      ImGui::BeginDisabled(!p.actions.is_enabled(*a));
+      if (ImGui::Selectable(a->label.c_str(), a->checked && a->checked())) p.actions.run(id);
+      ImGui::EndDisabled();
+    }
+    ImGui::EndCombo();
+  }
 }
 
 // Runs a command from a panel field, its label or refusal going to the status bar.

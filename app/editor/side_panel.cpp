@@ -2,7 +2,10 @@
 
 #include <imgui.h>
 
+#include "app/editor/logic/compare_layout.hpp"
 #include "app/editor/logic/editor_layout.hpp"
+#include "core/analysis/compared_schemes.hpp"
+#include "core/scene/network_edit.hpp"
 
 namespace pl {
 
@@ -20,12 +23,13 @@ bool draw_side_panel(const SidePanel& p, double top, double bottom) {
   draw_tools_section(p);
   if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen))
     draw_selection_section(p);
-  if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen))
+  if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) {
     rebuild = draw_display_section(p);
+    // The comparison's panes are a choice of display: which schemes fill the network side by
+    // side.
+    if (p.doc.scene().network) rebuild |= draw_comparison_section(p);
+  }
   if (ImGui::CollapsingHeader("Work plane")) draw_work_plane_section(p);
-  if (p.doc.scene().network &&
-      ImGui::CollapsingHeader("Comparison", ImGuiTreeNodeFlags_DefaultOpen))
-    draw_comparison_section(p);
   if (ImGui::CollapsingHeader("Continuity", ImGuiTreeNodeFlags_DefaultOpen))
     draw_continuity_section(p);
   ImGui::PopItemWidth();
@@ -79,17 +83,58 @@ void draw_work_plane_section(const SidePanel& p) {
   ImGui::TextDisabled("New points are placed on this plane.");
 }
 
-void draw_comparison_section(const SidePanel& p) {
+bool draw_comparison_section(const SidePanel& p) {
+  ImGui::Separator();
+  ImGui::TextUnformatted("Compare schemes");
   const Action* compare = p.actions.find("view.compare");
   bool on = p.views.compare();
-  if (compare && ImGui::Checkbox("Gregory | GB side by side  (C)", &on)) p.actions.run(compare->id);
-  if (!p.views.compare()) return;
-  ImGui::Checkbox("Colour GB by distance  (D)", &p.views.difference);
+  if (compare && ImGui::Checkbox("Side by side  (C)", &on)) p.actions.run(compare->id);
+  CompareSetup setup = compare_setup_from(p.prefs.compare_schemes, p.prefs.compare_base);
+  const CompareSetup before = setup;
+  // Panes and their schemes; a change re-evaluates the comparison (rebuild).
+  int count = int(setup.schemes.size());
+  const std::string count_label = std::to_string(count) + " panes";
+  if (ImGui::BeginCombo("Panes", count_label.c_str())) {
+    for (int c : kComparePaneCounts)
+      if (ImGui::Selectable((std::to_string(c) + " panes").c_str(), c == count))
+        setup = with_pane_count(setup, c);
+    ImGui::EndCombo();
+  }
+  const std::vector<FaceScheme> all = comparable_schemes();
+  for (int i = 0; i < int(setup.schemes.size()); ++i) {
+    const std::string label = "Pane " + std::to_string(i + 1);
+    if (ImGui::BeginCombo(label.c_str(), scheme_title(setup.schemes[i]).c_str())) {
+      for (FaceScheme s : all)
+        if (ImGui::Selectable(scheme_title(s).c_str(), s == setup.schemes[i]))
+          setup = with_pane_scheme(setup, i, s);
+      ImGui::EndCombo();
+    }
+  }
+  if (ImGui::BeginCombo("Base", scheme_title(setup.base).c_str())) {
+    for (FaceScheme s : setup.schemes)
+      if (ImGui::Selectable(scheme_title(s).c_str(), s == setup.base)) setup.base = s;
+    ImGui::EndCombo();
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("The distance colouring and the table's distances are to this scheme");
+  bool rebuild = false;
+  if (!(setup == before)) {
+    p.prefs.compare_schemes = schemes_keywords(setup);
+    p.prefs.compare_base = scheme_keyword(setup.base);
+    // A new base alone needs no evaluation: the panes stay, their distances follow.
+    if (setup.schemes == before.schemes)
+      p.views.set_base(setup.base);
+    else
+      rebuild = p.views.compare();
+  }
+  if (!p.views.compare()) return rebuild;
+  ImGui::Checkbox("Colour by distance to base  (D)", &p.views.difference);
   if (p.views.difference)
     ImGui::TextWrapped(
-        "Signed distance of each GB sample to the nearest point of the Gregory "
+        "Signed distance of each sample to the nearest point of the base pane's "
         "tessellation; max |d| = %.3g",
         p.views.difference_max());
+  return rebuild;
 }
 
 }  // namespace pl

@@ -47,7 +47,9 @@ void draw_curve_section(const SidePanel& p, int curve, int point);  // point -1:
 // Returns true when the densities changed.
 bool draw_display_section(const SidePanel& p);
 void draw_work_plane_section(const SidePanel& p);
-void draw_comparison_section(const SidePanel& p);
+// The comparison's panes, their schemes and base (in the Display section). Returns true when the
+// panes changed (the views must be rebuilt).
+bool draw_comparison_section(const SidePanel& p);
 void draw_continuity_section(const SidePanel& p);
 // Brings the Continuity figures up to the document once the views shown have settled: the
 // scene's own filling, or the comparison's two (continuity_panel.cpp).

@@ -86,18 +86,17 @@ void draw_point_overlays(const OverlayFrame& o) {
   dl->PopClipRect();
 }
 
-void draw_panel_label(const OverlayFrame& o, int panel, bool difference, const ViewRect& whole) {
+void draw_panel_label(const OverlayFrame& o, const std::string& label, const ViewRect& whole) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
   const float s = o.ui_scale;
   const ImVec2 lo(float(o.rect.x), float(o.rect.y)),
       hi(float(o.rect.x + o.rect.width), float(o.rect.y + o.rect.height));
-  // The longest title that fits the panel: narrow windows get the short ones, never a cut one.
-  const std::string label =
-      compare_panel_title(panel, difference, o.rect.width - 24 * s,
-                          [](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x; });
   dl->AddText(ImVec2(lo.x + 12 * s, lo.y + 10 * s), rgba(0.12f, 0.13f, 0.16f), label.c_str());
+  // The panes' borders with their left and upper neighbours.
   if (o.rect.x > whole.x)
     dl->AddLine(ImVec2(lo.x, lo.y), ImVec2(lo.x, hi.y), rgba(0.1f, 0.1f, 0.12f), 2 * s);
+  if (o.rect.y > whole.y)
+    dl->AddLine(ImVec2(lo.x, lo.y), ImVec2(hi.x, lo.y), rgba(0.1f, 0.1f, 0.12f), 2 * s);
 }
 
 void draw_axis_triad(const OverlayFrame& o) {

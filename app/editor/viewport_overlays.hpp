@@ -38,8 +38,8 @@ void draw_point_overlays(const OverlayFrame& o);
 // multiplicity), their ends, and a label at each joint of two curves with its G0/G1/G2 figures
 // (curve_overlays.cpp).
 void draw_curve_marks(const OverlayFrame& o);
-// "Gregory" / "Generalized Bezier" at the top left of a comparison panel, and the divider.
-void draw_panel_label(const OverlayFrame& o, int panel, bool difference, const ViewRect& whole);
+// A comparison pane's title (compare_pane_title) at its top left, and its dividers.
+void draw_panel_label(const OverlayFrame& o, const std::string& label, const ViewRect& whole);
 void draw_axis_triad(const OverlayFrame& o);
 void draw_error_text(const ViewRect& rect, const std::string& text);
 // The active tool's feedback (picked points and lines, the dashed rubber band, the mark where a

@@ -162,9 +162,7 @@ void ViewportPainter::draw_panel_gl(const ViewportFrame& f, int panel, const Col
   renderer.draw_backdrop(v);
   const Camera& camera = *f.camera;
   const GpuScene& gpu = f.views->panel(panel).gpu();
-  const GpuScene* difference = f.views->showing_difference() && panel == 1
-                                   ? f.views->difference_scene(f.doc->revision())
-                                   : nullptr;
+  const GpuScene* difference = f.views->difference_scene(f.doc->revision(), panel);
   if (difference) {
     DisplaySettings d = display;
     d.base = BaseMode::Curvature;
@@ -255,7 +253,16 @@ void ViewportPainter::paint(const ViewportFrame& f, const ColorRange& range) {
                    f.curve_marks};
     draw_curve_marks(o);
     draw_point_overlays(o);
-    if (f.views->compare()) draw_panel_label(o, i, f.views->showing_difference(), f.viewport);
+    if (f.views->panels() > 1) {
+      const CompareSetup& setup = f.views->setup();
+      draw_panel_label(
+          o,
+          compare_pane_title(
+              setup.schemes[i], i == setup.base_pane(), f.views->showing_difference(), setup.base,
+              o.rect.width - 24 * f.ui_scale,
+              [](const std::string& t) { return double(ImGui::CalcTextSize(t.c_str()).x); }),
+          f.viewport);
+    }
     draw_axis_triad(o);
   }
 }

@@ -65,7 +65,7 @@ class ViewportPainter {
   void draw_progress(const ViewportFrame& f);
   void draw_panel_gl(const ViewportFrame& f, int panel, const ColorRange& range,
                      const DisplaySettings& display);
-  std::array<PanelGuides, 2> guides_;
+  std::array<PanelGuides, kMaxComparePanes> guides_;
 };
 
 }  // namespace pl

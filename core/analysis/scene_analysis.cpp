@@ -35,6 +35,8 @@ std::function<Vec3(double)> side_curve(const Scene& scene, const SceneSurface& s
   return [&patch, patch_side](double t) { return patch.boundary_point(patch_side, t); };
 }
 
+}  // namespace
+
 PatchReport analyze_surface(const Scene& scene, const SceneSurface& s) {
   const PatchEvaluator& ev = *s.evaluator;
   PatchReport r;
@@ -73,7 +75,7 @@ PatchReport analyze_surface(const Scene& scene, const SceneSurface& s) {
   return r;
 }
 
-EdgeReport analyze_edge(const SceneSurfaces& ss, const SharedEdge& e) {
+EdgeReport analyze_shared_edge(const SceneSurfaces& ss, const SharedEdge& e) {
   const SceneSurface& a = ss.surfaces[e.surface[0]];
   const SceneSurface& b = ss.surfaces[e.surface[1]];
   EdgeReport r;
@@ -101,8 +103,6 @@ EdgeReport analyze_edge(const SceneSurfaces& ss, const SharedEdge& e) {
   return r;
 }
 
-}  // namespace
-
 double angle_deg(const Vec3& a, const Vec3& b) {
   return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)) * 180.0 / M_PI;
 }
@@ -114,7 +114,7 @@ SceneReport analyze_scene(const Scene& scene, const SceneSurfaces& ss, int curve
         analyze_curve(scene.curves[i], curve_name(scene.curves[i], i), curve_samples));
   r.joints = curve_joints(scene.curves);
   for (const SceneSurface& s : ss.surfaces) r.patches.push_back(analyze_surface(scene, s));
-  for (const SharedEdge& e : ss.shared_edges) r.edges.push_back(analyze_edge(ss, e));
+  for (const SharedEdge& e : ss.shared_edges) r.edges.push_back(analyze_shared_edge(ss, e));
   for (const ProjectedVertex& v : ss.projected_vertices)
     r.vertices.push_back({v.vertex, v.max_angle_deg});
   return r;

@@ -47,6 +47,10 @@ struct SceneReport {
 SceneReport analyze_scene(const Scene& scene, const SceneSurfaces& surfaces,
                           int curve_samples = 32);
 
+// The figures of one surface, and of one edge two faces share (what analyze_scene lists).
+PatchReport analyze_surface(const Scene& scene, const SceneSurface& surface);
+EdgeReport analyze_shared_edge(const SceneSurfaces& surfaces, const SharedEdge& edge);
+
 // Angle between two unit vectors in degrees, accurate for tiny angles (atan2 form).
 double angle_deg(const Vec3& a, const Vec3& b);
 

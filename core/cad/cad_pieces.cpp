@@ -11,6 +11,7 @@
 #include "core/patch/gb/gb_ribbon_patch.hpp"
 #include "core/patch/gregory_quad.hpp"
 #include "core/patch/gregory_tri.hpp"
+#include "core/patch/transfinite/ribbon_patch.hpp"
 
 namespace pl {
 
@@ -20,6 +21,7 @@ const DomainQuad kUnitSquare{Vec2(0, 0), Vec2(1, 0), Vec2(1, 1), Vec2(0, 1)};
 
 // Types whose boundary_curves() are the exact sides (Bézier rows the patch interpolates).
 bool exact_boundary_curves(const Patch& p) {
+  if (const auto* r = dynamic_cast<const RibbonPatch*>(&p)) return r->bezier_sides();
   return dynamic_cast<const GregoryQuadPatch*>(&p) || dynamic_cast<const GregoryTriPatch*>(&p) ||
          dynamic_cast<const GBPatch*>(&p) || dynamic_cast<const GBRibbonPatch*>(&p);
 }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "core/patch/transfinite/ribbon_patch.hpp"
+
 namespace pl {
 
 namespace {
@@ -22,6 +24,12 @@ bool follow(PatchEvaluator& ev, const Patch& target, std::size_t& moved) {
   const Patch& current = ev.patch();
   if (current.type() != target.type() || current.size() != target.size() ||
       current.domain().key() != target.domain().key())
+    return false;
+  // Ribbon patches of two schemes (or twist estimates) share their type, points and domain but
+  // not their basis: a face switched from one such scheme to another is evaluated afresh.
+  const auto* a = dynamic_cast<const RibbonPatch*>(&current);
+  const auto* b = dynamic_cast<const RibbonPatch*>(&target);
+  if (a && b && (a->scheme() != b->scheme() || a->options().twists != b->options().twists))
     return false;
   std::vector<PatchEvaluator::PointMove> moves;
   for (std::size_t k = 0; k < target.size(); ++k)

@@ -25,7 +25,8 @@ struct PatchCodec {
 // The codecs, in the order of the table.
 extern const PatchCodec kBezierPatchCodec, kGBPatchCodec, kGBRibbonPatchCodec, kGregoryQuadCodec,
     kGregoryTriCodec, kInterpolatingPatchCodec, kHermitePatchCodec, kBSplinePatchCodec,
-    kNurbsPatchCodec, kCoonsNetworkCodec, kPairJoinCodec, kGapFillCodec, kCatmullClarkCodec;
+    kNurbsPatchCodec, kCoonsNetworkCodec, kPairJoinCodec, kGapFillCodec, kCatmullClarkCodec,
+    kRibbonPatchCodec;
 
 std::span<const PatchCodec> patch_codecs();
 const PatchCodec* find_patch_codec(const std::string& type);

@@ -11,7 +11,7 @@ std::span<const PatchCodec> patch_codecs() {
       kGregoryQuadCodec,  kGregoryTriCodec,   kInterpolatingPatchCodec,
       kHermitePatchCodec, kBSplinePatchCodec, kNurbsPatchCodec,
       kCoonsNetworkCodec, kPairJoinCodec,     kGapFillCodec,
-      kCatmullClarkCodec,
+      kCatmullClarkCodec, kRibbonPatchCodec,
   };
   return codecs;
 }

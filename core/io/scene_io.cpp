@@ -1,6 +1,7 @@
 #include "core/io/scene_io.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <stdexcept>
 #include <utility>
@@ -13,6 +14,7 @@
 #include "core/io/patch_codec.hpp"
 #include "core/io/scene_checks.hpp"
 #include "core/patch/gb/default_net.hpp"
+#include "core/scene/network_edit.hpp"
 
 namespace pl {
 
@@ -20,15 +22,13 @@ namespace {
 
 FaceScheme read_scheme(const JsonNode& node, int sides) {
   const std::string s = node.string();
-  if (s == "auto") return FaceScheme::Auto;
-  if (s == "gb") return FaceScheme::GB;
-  if (s == "gregory") {
-    if (sides != 3 && sides != 4)
-      node.fail("scheme \"gregory\" needs a face of 3 or 4 sides, this one has " +
-                std::to_string(sides));
-    return FaceScheme::Gregory;
-  }
-  node.fail("unknown scheme \"" + s + "\" (allowed: auto, gregory, gb)");
+  const std::optional<FaceScheme> scheme = parse_scheme_keyword(s);
+  if (!scheme)
+    node.fail("unknown scheme \"" + s + "\" (allowed: auto, " + face_scheme_keywords() + ")");
+  if (*scheme == FaceScheme::Gregory && sides != 3 && sides != 4)
+    node.fail("scheme \"gregory\" needs a face of 3 or 4 sides, this one has " +
+              std::to_string(sides));
+  return *scheme;
 }
 
 // The stored index of a free point in the face's .gbp net: two names of one shared corner-block
@@ -111,7 +111,7 @@ Network read_network(const JsonNode& node) {
     }
   if (auto faces = node.find("faces"))
     for (const JsonNode& f : faces->items()) {
-      f.allow_only({"loop", "scheme", "name", "degree", "offsets"});
+      f.allow_only({"loop", "scheme", "name", "degree", "offsets", "fullness"});
       NetworkFace face;
       const JsonNode loop = f.at("loop");
       if (loop.items().size() > std::size_t(kMaxFaceSides))
@@ -127,6 +127,12 @@ Network read_network(const JsonNode& node) {
       if (auto s = f.find("scheme"))
         face.scheme = read_scheme(*s, static_cast<int>(face.loop.size()));
       if (auto name = f.find("name")) face.name = name->string();
+      if (auto full = f.find("fullness")) {
+        if (face.scheme != FaceScheme::Midpoint && face.scheme != FaceScheme::MidpointCoons)
+          full->fail("fullness is a setting of the midpoint and midpoint-coons schemes");
+        face.fullness = full->number();
+        if (std::abs(face.fullness) > 100) full->fail("the fullness lies in [-100, 100]");
+      }
       read_interior(f, face);
       net.faces.push_back(std::move(face));
     }
@@ -271,10 +277,10 @@ std::string scene_to_json(const Scene& scene) {
     for (const NetworkFace& f : n.faces) {
       Ordered jf = Ordered::object();
       jf["loop"] = f.loop;
-      if (f.scheme == FaceScheme::Gregory) jf["scheme"] = "gregory";
-      if (f.scheme == FaceScheme::GB) jf["scheme"] = "gb";
+      if (f.scheme != FaceScheme::Auto) jf["scheme"] = scheme_keyword(f.scheme);
       if (!f.name.empty()) jf["name"] = f.name;
       if (f.degree != 3) jf["degree"] = f.degree;
+      if (f.fullness != 1) jf["fullness"] = f.fullness;
       if (!f.offsets.empty()) jf["offsets"] = interior_offsets_json(f.offsets);
       net["faces"].push_back(jf);
     }

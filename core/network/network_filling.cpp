@@ -8,7 +8,9 @@
 #include "core/network/gb_face.hpp"
 #include "core/network/gb_face_interior.hpp"
 #include "core/network/gregory_face.hpp"
+#include "core/network/ribbon_face.hpp"
 #include "core/network/tangent_planes.hpp"
+#include "core/scene/network_edit.hpp"
 
 namespace pl {
 
@@ -26,6 +28,17 @@ FacePatch build_face_patch(int face, FaceScheme scheme, const FaceRibbons& ribbo
     fp.patch = gregory_face_patch(ribbons);
     fp.patch_side.resize(ribbons.sides.size());
     std::iota(fp.patch_side.begin(), fp.patch_side.end(), 0);  // face side i = domain side i
+    return fp;
+  }
+  if (const std::optional<transfinite::RibbonScheme> rs = ribbon_scheme_of(scheme)) {
+    try {
+      fp.patch = ribbon_face_patch(ribbons, *rs, data.fullness);
+    } catch (const std::invalid_argument& e) {
+      throw DataError(source, face_path(face),
+                      "cannot build the " + scheme_keyword(scheme) + " patch: " + e.what());
+    }
+    fp.patch_side.resize(ribbons.sides.size());
+    std::iota(fp.patch_side.begin(), fp.patch_side.end(), 0);
     return fp;
   }
   // GB faces: the independent-ribbon GB patch from the same ribbons, over the regular n-gon

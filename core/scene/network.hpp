@@ -12,7 +12,21 @@
 
 namespace pl {
 
-enum class FaceScheme { Auto, Gregory, GB };
+// How a face is filled: Auto (Gregory for 3 and 4 sides, GB otherwise), the Gregory and GB
+// patches of the Chiyokura-Kimura ribbons, or one of the ribbon-based transfinite schemes over
+// the same ribbons (core/patch/transfinite). The keywords, the list of all schemes and the
+// parsing live in one place: core/scene/network_edit.hpp (scheme_keyword, all_face_schemes).
+enum class FaceScheme {
+  Auto,
+  Gregory,
+  GB,
+  SideBased,
+  CornerBased,
+  GeneralizedCoons,
+  CompositeRibbon,
+  Midpoint,
+  MidpointCoons
+};
 
 struct NetworkEdge {
   std::array<int, 2> v{0, 0};  // start and end vertex
@@ -42,6 +56,9 @@ struct NetworkFace {
   std::string name;
   int degree = 3;  // GB faces: the degree of every ribbon along its side (>= 3)
   std::vector<InteriorOffset> offsets;  // GB faces: the free points moved from their defaults
+  // Midpoint schemes: the fullness of the face (1: the schemes' default midpoint; see
+  // RibbonPatchOptions::fullness and docs/scene-format.md).
+  double fullness = 1;
   bool operator==(const NetworkFace&) const = default;
 };
 

@@ -402,16 +402,70 @@ Vec3 stored_normal(const Vec3& normal) {
   return n;
 }
 
+namespace {
+using transfinite::RibbonScheme;
+// The keywords of the patch schemes; the ribbon schemes are named by their own module
+// (transfinite::ribbon_scheme_name), so each name is written once.
+struct SchemeName {
+  FaceScheme scheme;
+  const char* keyword;
+};
+constexpr SchemeName kSchemeNames[] = {
+    {FaceScheme::Auto, "auto"}, {FaceScheme::Gregory, "gregory"}, {FaceScheme::GB, "gb"}};
+struct RibbonName {
+  FaceScheme scheme;
+  RibbonScheme ribbon;
+};
+constexpr RibbonName kRibbonSchemes[] = {
+    {FaceScheme::SideBased, RibbonScheme::SideBased},
+    {FaceScheme::CornerBased, RibbonScheme::CornerBased},
+    {FaceScheme::GeneralizedCoons, RibbonScheme::GeneralizedCoons},
+    {FaceScheme::CompositeRibbon, RibbonScheme::CompositeRibbon},
+    {FaceScheme::Midpoint, RibbonScheme::Midpoint},
+    {FaceScheme::MidpointCoons, RibbonScheme::MidpointCoons},
+};
+constexpr FaceScheme kAllFaceSchemes[] = {
+    FaceScheme::Gregory,          FaceScheme::GB,
+    FaceScheme::SideBased,        FaceScheme::CornerBased,
+    FaceScheme::GeneralizedCoons, FaceScheme::CompositeRibbon,
+    FaceScheme::Midpoint,         FaceScheme::MidpointCoons,
+};
+}  // namespace
+
 std::string scheme_keyword(FaceScheme s) {
-  switch (s) {
-    case FaceScheme::Auto:
-      return "auto";
-    case FaceScheme::Gregory:
-      return "gregory";
-    case FaceScheme::GB:
-      return "gb";
-  }
+  for (const SchemeName& n : kSchemeNames)
+    if (n.scheme == s) return n.keyword;
+  if (const auto r = ribbon_scheme_of(s)) return std::string(transfinite::ribbon_scheme_name(*r));
   return "?";
+}
+
+std::optional<FaceScheme> parse_scheme_keyword(std::string_view keyword) {
+  for (const SchemeName& n : kSchemeNames)
+    if (keyword == n.keyword) return n.scheme;
+  if (const auto r = transfinite::parse_ribbon_scheme(keyword))
+    for (const RibbonName& n : kRibbonSchemes)
+      if (n.ribbon == *r) return n.scheme;
+  return std::nullopt;
+}
+
+std::span<const FaceScheme> all_face_schemes() {
+  return kAllFaceSchemes;
+}
+
+std::string face_scheme_keywords() {
+  std::string out;
+  for (FaceScheme s : all_face_schemes()) out += (out.empty() ? "" : ", ") + scheme_keyword(s);
+  return out;
+}
+
+bool is_ribbon_scheme(FaceScheme s) {
+  return ribbon_scheme_of(s).has_value();
+}
+
+std::optional<RibbonScheme> ribbon_scheme_of(FaceScheme s) {
+  for (const RibbonName& n : kRibbonSchemes)
+    if (n.scheme == s) return n.ribbon;
+  return std::nullopt;
 }
 
 }  // namespace pl

@@ -10,8 +10,10 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "core/patch/transfinite/ribbon_scheme.hpp"
 #include "core/scene/network.hpp"
 
 namespace pl {
@@ -98,7 +100,22 @@ void set_vertex_normal(Network& network, int v, std::optional<Vec3> normal);
 // for bit. normal must be finite and non-zero.
 Vec3 stored_normal(const Vec3& normal);
 
-// The name of a scheme as the file and the interface spell it ("auto", "gregory", "gb").
+// The name of a scheme as the file and the interface spell it ("auto", "gregory", "gb",
+// "side-based", "corner-based", "generalized-coons", "composite-ribbon", "midpoint",
+// "midpoint-coons").
 std::string scheme_keyword(FaceScheme scheme);
+// The scheme a keyword names (every keyword of scheme_keyword, "auto" included), or none.
+std::optional<FaceScheme> parse_scheme_keyword(std::string_view keyword);
+// Every scheme a face can be filled with (Auto left out), in the order of the enum: the one list
+// the comparison, the CLI and the documentation go through.
+std::span<const FaceScheme> all_face_schemes();
+// The keywords of all_face_schemes() joined by ", " (for messages: "allowed: ...").
+std::string face_scheme_keywords();
+// True for the ribbon-based transfinite schemes (every scheme but Auto, Gregory and GB): they
+// take any number of sides >= 3 but only convex faces (their parameterizations are defined on
+// convex domains).
+bool is_ribbon_scheme(FaceScheme scheme);
+// The transfinite scheme a ribbon scheme evaluates (none for Auto, Gregory, GB).
+std::optional<transfinite::RibbonScheme> ribbon_scheme_of(FaceScheme scheme);
 
 }  // namespace pl

@@ -15,9 +15,9 @@
 #include "app/editor/logic/live_surfaces.hpp"
 #include "app/editor/logic/point_names.hpp"
 #include "app/editor/logic/preferences.hpp"
-#include "app/editor/logic/surface_difference.hpp"
 #include "app/editor/logic/surface_probe.hpp"
 #include "cli_test_util.hpp"
+#include "core/analysis/surface_distance.hpp"
 #include "core/patch/side_curve.hpp"
 
 namespace pl {
@@ -167,12 +167,14 @@ TEST(EditorDifference, SignedDistanceBetweenParallelPlanes) {
     return m;
   };
   const SurfaceMesh lower = grid(20, 0, 0), upper = grid(7, 0.1, 0.01);
-  const std::vector<double> d = signed_distance_to(upper, lower);
+  const std::vector<double> d =
+      signed_distance_to(upper.positions, {lower.positions, lower.normals, lower.triangles});
   for (std::size_t i = 0; i < d.size(); ++i)
     if (upper.positions[i].x <= 1) {
       EXPECT_NEAR(d[i], 0.1, 1e-12) << i;
     }
-  const std::vector<double> back = signed_distance_to(lower, upper);
+  const std::vector<double> back =
+      signed_distance_to(lower.positions, {upper.positions, upper.normals, upper.triangles});
   for (std::size_t i = 0; i < back.size(); ++i)
     if (lower.positions[i].x >= 0.01) {
       EXPECT_NEAR(back[i], -0.1, 1e-12) << i;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "app/editor/logic/camera_control.hpp"
+#include "app/editor/logic/compare_layout.hpp"
 #include "app/editor/logic/continuity_monitor.hpp"
 #include "app/editor/logic/difference_field.hpp"
 #include "app/editor/logic/editor_layout.hpp"
@@ -124,7 +125,8 @@ TEST(EditorLayout, LegendColumnBesideTheViewNeverOverIt) {
   EXPECT_EQ(c.x, v.x + v.width);  // right of the view, left of the side panel
   EXPECT_EQ(c.x + c.width, 1600 - l.side_panel_width());
   // Both comparison panels lie left of the column.
-  for (const ViewRect& p : l.panels(true)) EXPECT_LE(p.x + p.width, c.x);
+  for (int count : kComparePaneCounts)
+    for (const ViewRect& p : l.panels(count)) EXPECT_LE(p.x + p.width, c.x);
   // A narrow window: the column takes at most a third of what the side panel leaves.
   EditorLayout narrow{{600, 500}, 20, 26, 1.0};
   narrow.legends = 1;
@@ -140,7 +142,7 @@ TEST(EditorLayout, LegendsForEachColouredView) {
   EXPECT_TRUE(view_legends(d, false, true, k, 1).empty());  // D without the comparison
   auto shaded_difference = view_legends(d, true, true, k, 0.5);
   ASSERT_EQ(shaded_difference.size(), 1u);
-  EXPECT_EQ(shaded_difference[0].title, "GB: distance to Gregory");
+  EXPECT_EQ(shaded_difference[0].title, "distance to Gregory");
   EXPECT_EQ(shaded_difference[0].range.lo, -0.5);
   EXPECT_EQ(shaded_difference[0].range.hi, 0.5);
   d.base = BaseMode::Curvature;
@@ -148,25 +150,33 @@ TEST(EditorLayout, LegendsForEachColouredView) {
   auto curvature = view_legends(d, true, false, k, 0.5);
   ASSERT_EQ(curvature.size(), 1u);  // one range for both panels
   EXPECT_EQ(curvature[0].title, "mean curvature");
-  // With distances in the GB panel the Gregory panel keeps a legend of its own.
+  // With distances in the other panes the base pane keeps a legend of its own.
   auto both = view_legends(d, true, true, k, 0.5);
   ASSERT_EQ(both.size(), 2u);
   EXPECT_EQ(both[0].title, "Gregory: mean curvature");
   EXPECT_EQ(both[0].range.hi, 3);
-  EXPECT_EQ(both[1].title, "GB: distance to Gregory");
+  EXPECT_EQ(both[1].title, "distance to Gregory");
+  auto gb_base = view_legends(d, true, true, k, 0.5, "Generalized Bezier");
+  EXPECT_EQ(gb_base[0].title, "Generalized Bezier: mean curvature");
+  EXPECT_EQ(gb_base[1].title, "distance to Generalized Bezier");
 }
 
 TEST(EditorLayout, ComparisonTitlesFitTheirPanel) {
   auto width = [](const std::string& t) { return 7.0 * double(t.size()); };  // 7 px a letter
-  const std::string full = compare_panel_title(1, true, 1000, width);
+  const FaceScheme G = FaceScheme::Gregory, B = FaceScheme::GB;
+  const std::string full = compare_pane_title(B, false, true, G, 1000, width);
   EXPECT_EQ(full, "Generalized Bezier, coloured by distance to Gregory");
-  const std::string mid = compare_panel_title(1, true, 200, width);
+  const std::string mid = compare_pane_title(B, false, true, G, 200, width);
   EXPECT_EQ(mid, "GB: distance to Gregory");
   EXPECT_LE(width(mid), 200);
-  EXPECT_EQ(compare_panel_title(1, true, 40, width), "GB");
-  EXPECT_EQ(compare_panel_title(1, false, 1000, width), "Generalized Bezier");
-  EXPECT_EQ(compare_panel_title(1, false, 100, width), "GB");
-  EXPECT_EQ(compare_panel_title(0, true, 100, width), "Gregory");
+  EXPECT_EQ(compare_pane_title(B, false, true, G, 40, width), "GB");
+  EXPECT_EQ(compare_pane_title(B, false, false, G, 1000, width), "Generalized Bezier");
+  EXPECT_EQ(compare_pane_title(B, false, false, G, 100, width), "GB");
+  EXPECT_EQ(compare_pane_title(G, true, true, G, 100, width), "Gregory (base)");
+  EXPECT_EQ(compare_pane_title(G, true, false, G, 100, width), "Gregory");
+  // Any scheme: GB as the base, Gregory coloured by its distance to it.
+  EXPECT_EQ(compare_pane_title(G, false, true, B, 1000, width),
+            "Gregory, coloured by distance to Generalized Bezier");
 }
 
 TEST(EditorProbe, ReadsTheDistanceOfTheDifferenceColouring) {
@@ -269,7 +279,7 @@ TEST(EditorView, EachComparisonPanelIsFramedTightly) {
   const LiveSurfaces gregory(s, 16, FaceScheme::Gregory, "g"), gb(s, 16, FaceScheme::GB, "b");
   const DrawScene* scenes[2] = {&gregory.draw(), &gb.draw()};
   EditorLayout l{{1600, 1000}, 20, 26, 1.0};
-  const ViewRect half = l.panels(true)[0];
+  const ViewRect half = l.panels(2)[0];
   ViewNavigator nav;
   nav.preset(ViewPreset::Iso, Box{Vec3(-1), Vec3(3)}, half.aspect());  // framed on a loose box
   nav.frame_tightly(scenes, half.aspect());
@@ -294,10 +304,10 @@ TEST(EditorView, TheLegendColumnDoesNotCutAFramedModel) {
   const DrawScene* scenes[2] = {&gregory.draw(), &gb.draw()};
   const std::vector<Vec3> points = framing_points(scenes);
   EditorLayout l{{1600, 1000}, 20, 26, 1.0};
-  const ViewRect wide = l.panels(true)[0];
+  const ViewRect wide = l.panels(2)[0];
   ViewNavigator nav;
   nav.frame_tightly(scenes, wide.aspect());
-  nav.follow_panel(l.display, true, wide.width);
+  nav.follow_panel(l.display, 2, wide.width);
   const Camera framed = nav.camera();
   auto widest = [&](const ViewRect& rect) {  // the model's widest reach from the panel centre
     double reach = 0;
@@ -311,24 +321,24 @@ TEST(EditorView, TheLegendColumnDoesNotCutAFramedModel) {
   const double reach = widest(wide);
   ASSERT_GT(reach, 0.85);  // the premise: the model spans the panel
   l.legends = 1;
-  const ViewRect narrow = l.panels(true)[0];
+  const ViewRect narrow = l.panels(2)[0];
   ASSERT_LT(narrow.width, 0.95 * wide.width);
-  nav.follow_panel(l.display, true, narrow.width);
+  nav.follow_panel(l.display, 2, narrow.width);
   EXPECT_LT(widest(narrow), 1.0);
   EXPECT_NEAR(widest(narrow), reach, 0.02);
   l.legends = 0;
-  nav.follow_panel(l.display, true, wide.width);
+  nav.follow_panel(l.display, 2, wide.width);
   EXPECT_NEAR(nav.camera().distance, framed.distance, 1e-9 * framed.distance);
   // A smaller window or the comparison turning off: no zoom.
   const double back = nav.camera().distance;
   l.display = {1200, 1000};
-  nav.follow_panel(l.display, true, l.panels(true)[0].width);
-  nav.follow_panel(l.display, false, l.panels(false)[0].width);
+  nav.follow_panel(l.display, 2, l.panels(2)[0].width);
+  nav.follow_panel(l.display, 1, l.panels(1)[0].width);
   EXPECT_EQ(nav.camera().distance, back);
   // Framing again at the new width: the next call only records it.
   nav.frame_tightly(scenes, narrow.aspect());
   const double d = nav.camera().distance;
-  nav.follow_panel(l.display, false, narrow.width);
+  nav.follow_panel(l.display, 1, narrow.width);
   EXPECT_EQ(nav.camera().distance, d);
 }
 

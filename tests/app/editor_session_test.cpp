@@ -153,14 +153,14 @@ TEST(EditorLayout, ViewportBetweenBarsAndPanelAndSplitForComparison) {
   EXPECT_EQ(v.y, 20);
   EXPECT_EQ(v.width, 1440 - 340 * 1.5);
   EXPECT_EQ(v.height, 900 - 20 - 26);
-  const auto two = l.panels(true);
+  const auto two = l.panels(2);
   ASSERT_EQ(two.size(), 2u);
   EXPECT_EQ(two[0].width + two[1].width, v.width);
   EXPECT_EQ(two[1].x, two[0].width);
-  EXPECT_EQ(l.panel_at(Vec2(10, 30), true), 0);
-  EXPECT_EQ(l.panel_at(Vec2(two[1].x + 1, 30), true), 1);
-  EXPECT_EQ(l.panel_at(Vec2(1400, 30), false), -1);  // the side panel
-  EXPECT_EQ(l.panel_at(Vec2(10, 5), false), -1);     // the menu bar
+  EXPECT_EQ(l.panel_at(Vec2(10, 30), 2), 0);
+  EXPECT_EQ(l.panel_at(Vec2(two[1].x + 1, 30), 2), 1);
+  EXPECT_EQ(l.panel_at(Vec2(1400, 30), 1), -1);  // the side panel
+  EXPECT_EQ(l.panel_at(Vec2(10, 5), 1), -1);     // the menu bar
 }
 
 }  // namespace

@@ -58,5 +58,6 @@ void bench_cad(const Options& options);
 void bench_cad_ngon(const Options& options);
 void bench_curve(const Options& options);
 void bench_grains(const Options& options);
+void bench_schemes(const Options& options);
 
 }  // namespace pl::bench

@@ -23,7 +23,7 @@ int main(int argc, char** argv) {
       std::fprintf(
           stderr,
           "usage: patchlab_bench [--quick] [--grains] [--only bezier,gb,gb_face,interior,engine,"
-          "catmull_clark,cad,cad_ngon,curve]\n");
+          "catmull_clark,cad,cad_ngon,curve,schemes]\n");
       return 2;
     }
   }
@@ -46,5 +46,6 @@ int main(int argc, char** argv) {
   run("cad", pl::bench::bench_cad);
   run("cad_ngon", pl::bench::bench_cad_ngon);
   run("curve", pl::bench::bench_curve);
+  run("schemes", pl::bench::bench_schemes);
   return 0;
 }

@@ -12,7 +12,7 @@
 #include "render_test_util.hpp"
 
 // The comparison's distance field (the editor's, GUI-free).
-#include "app/editor/logic/surface_difference.hpp"
+#include "core/analysis/surface_distance.hpp"
 
 namespace pl {
 namespace {
@@ -60,7 +60,9 @@ INSTANTIATE_TEST_SUITE_P(
 double apply_distance(const DrawScene& gregory, DrawScene& gb) {
   double max_distance = 0;
   for (std::size_t i = 0; i < gb.surfaces.size(); ++i) {
-    gb.surfaces[i].mean = signed_distance_to(gb.surfaces[i], gregory.surfaces.at(i));
+    const SurfaceMesh& to = gregory.surfaces.at(i);
+    gb.surfaces[i].mean =
+        signed_distance_to(gb.surfaces[i].positions, {to.positions, to.normals, to.triangles});
     for (double v : gb.surfaces[i].mean) max_distance = std::max(max_distance, std::abs(v));
   }
   return max_distance;

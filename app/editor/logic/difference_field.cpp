@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "app/editor/logic/surface_difference.hpp"
+#include "core/analysis/surface_distance.hpp"
 
 namespace pl {
 
@@ -14,7 +14,8 @@ bool DifferenceField::follow(const DrawScene& gregory, const DrawScene& gb, uint
   max_abs_ = 0;
   for (std::size_t i = 0; i < scene_.surfaces.size() && i < gregory.surfaces.size(); ++i) {
     SurfaceMesh& m = scene_.surfaces[i];
-    m.mean = signed_distance_to(m, gregory.surfaces[i]);
+    const SurfaceMesh& to = gregory.surfaces[i];
+    m.mean = signed_distance_to(m.positions, {to.positions, to.normals, to.triangles});
     for (double v : m.mean) max_abs_ = std::max(max_abs_, std::abs(v));
     // Revisions of their own (high bit set, never an evaluator's), new at every recomputation,
     // so the GPU copy re-uploads every surface's new field.

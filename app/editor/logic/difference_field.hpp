@@ -1,8 +1,8 @@
 // The comparison's difference colouring: the GB filling's meshes with the field the colour map
 // reads (`mean`) replaced by each sample's signed distance to the Gregory filling of the same
-// face (surface_difference), and the largest |distance| for a symmetric colour range.
-// Recomputed only when its key (the document revision and which densities are shown) changes.
-// GUI-free and unit-tested; the editor uploads scene() when follow() says it changed.
+// face (core/analysis/surface_distance.hpp), and the largest |distance| for a symmetric colour
+// range. Recomputed only when its key (the document revision and which densities are shown)
+// changes. GUI-free and unit-tested; the editor uploads scene() when follow() says it changed.
 #pragma once
 
 #include <cstdint>

@@ -100,7 +100,9 @@ std::string preferences_to_text(const Preferences& p) {
     << "screenshot_width = " << p.screenshot_width << "\n"
     << "screenshot_height = " << p.screenshot_height << "\n"
     << "screenshot_transparent = " << p.screenshot_transparent << "\n"
-    << "last_directory = " << p.last_directory << "\n";
+    << "last_directory = " << p.last_directory << "\n"
+    << "compare_schemes = " << p.compare_schemes << "\n"
+    << "compare_base = " << p.compare_base << "\n";
   return o.str();
 }
 
@@ -173,6 +175,10 @@ Preferences preferences_from_text(const std::string& text) {
       flag(p.screenshot_transparent);
     } else if (key == "last_directory") {
       p.last_directory = value;
+    } else if (key == "compare_schemes") {
+      p.compare_schemes = value;  // checked where it is read (compare_setup_from)
+    } else if (key == "compare_base") {
+      p.compare_base = value;
     }
   }
   return p;

@@ -21,6 +21,9 @@ struct Preferences {
   int screenshot_width = 1920, screenshot_height = 1080;
   bool screenshot_transparent = false;
   std::string last_directory;
+  // The comparison's panes (compare_layout.hpp): one scheme keyword per pane, and the base.
+  std::string compare_schemes = "gregory,gb";
+  std::string compare_base = "gregory";
 };
 
 // The ranges of the comb controls (Display panel sliders, accepted preference values).

@@ -6,6 +6,7 @@
 #include "app/editor/logic/command_sequence.hpp"
 #include "app/editor/logic/selection_properties.hpp"
 #include "app/editor/logic/tool.hpp"
+#include "core/scene/network_edit.hpp"
 
 namespace pl {
 
@@ -27,8 +28,7 @@ std::vector<int> existing(const Scene& scene, const Selection& selection, Kind k
 void add_scheme_action(ActionRegistry& actions, Document& doc, Selection& selection, const Say& say,
                        FaceScheme scheme, const std::string& help) {
   const std::string name = scheme_name(scheme);
-  std::string id = "face.scheme." + name;
-  std::transform(id.begin(), id.end(), id.begin(), ::tolower);
+  const std::string id = "face.scheme." + scheme_keyword(scheme);
   Action a = make_action(id, "Face/Scheme", name, {}, help, nullptr);
   a.context = context_bit(ContextTarget::Face);
   // Gregory fills only triangles and quads: offered when every selected face is one.
@@ -142,6 +142,11 @@ void add_selection_actions(ActionRegistry& actions, Document& doc, Selection& se
                     "fill the selected faces with Gregory patches");
   add_scheme_action(actions, doc, selection, say, FaceScheme::GB,
                     "fill the selected faces with Generalized Bezier patches");
+  for (FaceScheme s : all_face_schemes())
+    if (is_ribbon_scheme(s))
+      add_scheme_action(actions, doc, selection, say, s,
+                        "fill the selected faces with the " + scheme_keyword(s) +
+                            " transfinite scheme (convex faces)");
 }
 
 }  // namespace pl

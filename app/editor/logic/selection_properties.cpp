@@ -48,6 +48,18 @@ const char* scheme_name(FaceScheme scheme) {
       return "Gregory";
     case FaceScheme::GB:
       return "GB";
+    case FaceScheme::SideBased:
+      return "Side-based";
+    case FaceScheme::CornerBased:
+      return "Corner-based";
+    case FaceScheme::GeneralizedCoons:
+      return "Generalized Coons";
+    case FaceScheme::CompositeRibbon:
+      return "Composite ribbon";
+    case FaceScheme::Midpoint:
+      return "Midpoint";
+    case FaceScheme::MidpointCoons:
+      return "Midpoint Coons";
   }
   return "?";
 }

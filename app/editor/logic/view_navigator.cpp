@@ -49,9 +49,9 @@ void ViewNavigator::frame_tightly(std::span<const DrawScene* const> scenes, doub
   mark_framed();
 }
 
-void ViewNavigator::follow_panel(const Vec2& window, bool compare, double width) {
-  const PanelShape was = std::exchange(panel_, PanelShape{window, compare, width});
-  if (was.window == window && was.compare == compare && was.width > 0 && width > 0 &&
+void ViewNavigator::follow_panel(const Vec2& window, int panes, double width) {
+  const PanelShape was = std::exchange(panel_, PanelShape{window, panes, width});
+  if (was.window == window && was.panes == panes && was.width > 0 && width > 0 &&
       was.width != width)
     camera_.zoom(width / was.width);
 }

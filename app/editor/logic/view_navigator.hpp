@@ -39,12 +39,13 @@ class ViewNavigator {
   // Frames what the scenes draw tightly (Camera::frame_points) from the current direction.
   void frame_tightly(std::span<const DrawScene* const> scenes, double aspect);
 
-  // Called every frame with the window size, whether the comparison is shown and the width of
-  // the first panel. When the panel width changed while the window and the split did not (the
+  // Called every frame with the window size, the number of panes shown (1, or the comparison's)
+  // and the width of the first panel. When the panel width changed while the window and the
+  // split did not (the
   // legend column came or went), zooms so the panel keeps showing the same width of the world:
   // a model framed across it is not cut by the new column, and comes back to its size when the
   // column goes. A window resize keeps the vertical extent, as every view does.
-  void follow_panel(const Vec2& window, bool compare, double width);
+  void follow_panel(const Vec2& window, int panes, double width);
 
   // Gestures: begin at the press, move with every cursor position, end at the release. An
   // orbit keeps the model (`model`: a sample of its points, orbit_sample) on screen about any
@@ -71,7 +72,7 @@ class ViewNavigator {
   bool framed_ = false;
   struct PanelShape {
     Vec2 window{0.0};
-    bool compare = false;
+    int panes = 1;
     double width = 0;
   } panel_;
   Gesture gesture_ = Gesture::None;
