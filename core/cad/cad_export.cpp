@@ -134,20 +134,27 @@ CadExportReport export_cad_unguarded(const Scene& scene, const std::filesystem::
     ft.max_work = mo.max_work;
     ft.max_shared_work = mo.max_total_work;
     ft.max_spans = mo.max_spans;
+    // The face to name: the first that failed on its own account (a face stopped because the
+    // export's shared bound was spent, possibly by another's failure, only if there is none).
+    const CadFace* failed = nullptr;
     for (const CadFace& f : model.faces)
-      if (!f.converged) {
-        // Only the position tolerance is an option; say which one failed, and what stopped it.
-        const bool position = f.position_deviation > model.tolerance;
-        throw DataError(
-            options.source, f.name,
-            "the fit did not reach the tolerance " + short_number(model.tolerance) + " / " +
-                short_number(model.normal_tolerance_deg) + " deg (deviation " +
-                short_number(f.position_deviation) + ", " + short_number(f.normal_deviation_deg) +
-                " deg; " + fit_end_text(f.end, ft) +
-                (f.end == FitEnd::Deadline ? " of " + short_number(options.time_limit_s) + " s"
-                                           : std::string()) +
-                ")" + (position ? "; try a larger --tolerance" : ""));
-      }
+      if (!f.converged &&
+          (!failed || (failed->end == FitEnd::SharedWork && f.end != FitEnd::SharedWork)))
+        failed = &f;
+    if (failed) {
+      const CadFace& f = *failed;
+      // Only the position tolerance is an option; say which one failed, and what stopped it.
+      const bool position = f.position_deviation > model.tolerance;
+      throw DataError(
+          options.source, f.name,
+          "the fit did not reach the tolerance " + short_number(model.tolerance) + " / " +
+              short_number(model.normal_tolerance_deg) + " deg (deviation " +
+              short_number(f.position_deviation) + ", " + short_number(f.normal_deviation_deg) +
+              " deg; " + fit_end_text(f.end, ft) +
+              (f.end == FitEnd::Deadline ? " of " + short_number(options.time_limit_s) + " s"
+                                         : std::string()) +
+              ")" + (position ? "; try a larger --tolerance" : ""));
+    }
     r.size = model.size;
     r.tolerance = model.tolerance;
     r.normal_tolerance_deg = model.normal_tolerance_deg;

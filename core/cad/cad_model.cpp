@@ -237,6 +237,10 @@ CadModel build_cad_model(std::vector<CadPiece> pieces, const CadModelOptions& op
       face_tol.max_work = options.max_work - face_work[i];
       const SurfaceFit fit = fit_surface(fn[i], sides[i], face_tol);
       face_work[i] += fit.work;
+      // A face stopped by its own bound or the deadline is refused, and with it the export: the
+      // shared bound is spent so that the fits still running stop at their next refinement.
+      if (!fit.converged && (fit.end == FitEnd::Work || fit.end == FitEnd::Deadline))
+        total_work.store(options.max_total_work + 1);
       f.surface = fit.surface;
       f.position_deviation = fit.position_deviation;
       f.normal_deviation_deg = fit.normal_deviation_deg;
