@@ -8,6 +8,7 @@
 #include "core/analysis/scene_analysis.hpp"  // angle_deg
 #include "core/base/parallel_for.hpp"
 #include "core/cad/side_matching.hpp"
+#include "core/io/json_node.hpp"  // short_number
 
 namespace pl {
 
@@ -68,6 +69,23 @@ double exact_normal_deviation(const CadSurface& s, const SurfaceFunction& f, int
 }
 
 }  // namespace
+
+std::string fit_end_text(FitEnd end, const FitTolerance& tol) {
+  switch (end) {
+    case FitEnd::Converged:
+      return "converged";
+    case FitEnd::Spans:
+      return "no span left to split within " + std::to_string(tol.max_spans) + " per direction";
+    case FitEnd::Work:
+      return "its work bound of " + short_number(double(tol.max_work)) + " grid points reached";
+    case FitEnd::SharedWork:
+      return "the export's work bound of " + short_number(double(tol.max_shared_work)) +
+             " grid points reached (all fits together)";
+    case FitEnd::Deadline:
+      return "stopped at the time limit";
+  }
+  return {};
+}
 
 double default_tolerance(double diagonal) {
   return std::min(1e-3, 1e-5 * diagonal);
@@ -153,10 +171,16 @@ CadModel build_cad_model(std::vector<CadPiece> pieces, const CadModelOptions& op
   const int nf = static_cast<int>(fitted_groups.size());
   std::vector<double> curve_position(nf, m.tolerance / 4);
   std::vector<char> curve_due(nf, 1), face_due(n, 1);
+  std::vector<std::size_t> face_work(n, 0);
   FitTolerance tol;
   tol.position = m.tolerance;
   tol.normal_deg = options.normal_tolerance_deg;
   tol.max_spans = options.max_spans;
+  tol.max_work = options.max_work;
+  tol.deadline = options.deadline;
+  std::atomic<std::size_t> total_work{0};
+  tol.shared_work = &total_work;
+  tol.max_shared_work = options.max_total_work;
   m.faces.resize(n);
   for (int round = 0;; ++round) {
     std::vector<std::string> failures(nf);
@@ -170,12 +194,19 @@ CadModel build_cad_model(std::vector<CadPiece> pieces, const CadModelOptions& op
       ct.position = curve_position[k];
       ct.normal_deg = options.normal_tolerance_deg / 5;
       ct.max_spans = 4 * options.max_spans;  // curves are cheap; singular ends need grading
+      ct.max_work = options.max_work;
+      ct.deadline = options.deadline;
+      ct.shared_work = &total_work;
+      ct.max_shared_work = options.max_total_work;
       const SideRef ref = G.members.front();
       const CurveFit fit = fit_curve(side_function(fn[ref.piece], ref.side), degree, ct);
       if (!fit.converged)
-        failures[k] = pieces[ref.piece].name + ": a side curve did not reach the tolerance (" +
-                      std::to_string(fit.position_deviation) + " after " +
-                      std::to_string(fit.curve.points.size()) + " points)";
+        failures[k] = pieces[ref.piece].name + ": a side curve did not reach the tolerance " +
+                      short_number(ct.position) + " / " + short_number(ct.normal_deg) +
+                      " deg (deviation " + short_number(fit.position_deviation) + ", " +
+                      short_number(fit.tangent_deviation_deg) + " deg with " +
+                      std::to_string(fit.curve.points.size()) + " points; " +
+                      fit_end_text(fit.end, ct) + ")";
       for (std::size_t i = 0; i < G.members.size(); ++i)
         sides[G.members[i].piece][G.members[i].side] =
             G.reversed[i] ? fit.curve.reversed() : fit.curve;
@@ -196,14 +227,35 @@ CadModel build_cad_model(std::vector<CadPiece> pieces, const CadModelOptions& op
         f.normal_deviation_deg = exact_normal_deviation(f.surface, fn[i], 32, f.position_deviation);
         return;
       }
-      const SurfaceFit fit = fit_surface(fn[i], sides[i], tol);
+      // The face's work bound covers all its fits (a face is fitted again when a curve it
+      // shares is tightened): what is left of it bounds this one.
+      if (face_work[i] >= options.max_work) {
+        f.converged = false, f.end = FitEnd::Work;
+        return;
+      }
+      FitTolerance face_tol = tol;
+      face_tol.max_work = options.max_work - face_work[i];
+      const SurfaceFit fit = fit_surface(fn[i], sides[i], face_tol);
+      face_work[i] += fit.work;
+      // A face stopped by its own bound or the deadline is refused, and with it the export: the
+      // shared bound is spent so that the fits still running stop at their next refinement.
+      if (!fit.converged && (fit.end == FitEnd::Work || fit.end == FitEnd::Deadline))
+        total_work.store(options.max_total_work + 1);
       f.surface = fit.surface;
       f.position_deviation = fit.position_deviation;
       f.normal_deviation_deg = fit.normal_deviation_deg;
       f.check_points = fit.check_points;
       f.converged = fit.converged;
+      f.end = fit.end;
+      f.work = face_work[i];
     });
     if (round == 3) break;
+    // A face stopped by its work bound or the deadline is refused: no tightening round for it.
+    if (std::any_of(m.faces.begin(), m.faces.end(), [](const CadFace& f) {
+          return !f.converged && (f.end == FitEnd::Work || f.end == FitEnd::SharedWork ||
+                                  f.end == FitEnd::Deadline);
+        }))
+      break;
     std::fill(curve_due.begin(), curve_due.end(), 0);
     std::fill(face_due.begin(), face_due.end(), 0);
     bool again = false;

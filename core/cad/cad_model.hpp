@@ -22,6 +22,8 @@ struct CadFace {
   double position_deviation = 0, normal_deviation_deg = 0;
   int check_points = 0;  // per direction
   bool converged = true;
+  FitEnd end = FitEnd::Converged;  // fitted: why the fit ended
+  std::size_t work = 0;            // fitted: grid points of all its fits (spline_fit.hpp)
 };
 
 struct CadModel {
@@ -38,7 +40,16 @@ struct CadModelOptions {
   std::optional<double> tolerance;  // default: default_tolerance(size)
   double normal_tolerance_deg = 0.05;
   int max_spans = 64;
+  // Per face, over all its fits (a face is fitted again when a curve it shares is tightened),
+  // and per fitted side curve (spline_fit.hpp). A face that reaches it is not converged, with
+  // end FitEnd::Work, and ends the tightening rounds.
+  std::size_t max_work = kDefaultFitWork;
+  std::size_t max_total_work = kDefaultExportWork;  // all fits of the export together
+  std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
 };
+
+// Why a fit ended, in words ("its work bound of 2.1e+06 grid points reached").
+std::string fit_end_text(FitEnd end, const FitTolerance& tol);
 
 // The smaller of 1e-3 and 1e-5 of the bounding-box diagonal (scene units).
 double default_tolerance(double diagonal);
@@ -46,6 +57,9 @@ double default_tolerance(double diagonal);
 // Diagonal of the bounding box of the pieces' surfaces, sampled on a 9 x 9 grid each.
 double pieces_size(const std::vector<CadPiece>& pieces);
 
+// Throws std::runtime_error naming the piece whose side curve could not be fitted (the fit's
+// deviation, and the bound that stopped it); faces that do not converge are reported in
+// CadFace::converged and ::end.
 CadModel build_cad_model(std::vector<CadPiece> pieces, const CadModelOptions& options);
 
 }  // namespace pl

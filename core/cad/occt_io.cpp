@@ -89,74 +89,88 @@ void quiet_occt() {
 
 void write_cad_file(const SewnShape& shape, const CadModel& model, const std::string& product,
                     CadFormat format, const std::filesystem::path& target,
-                    const std::vector<std::pair<std::string, TopoDS_Edge>>& curves) {
+                    const std::vector<std::pair<std::string, TopoDS_Edge>>& curves,
+                    const CadDeadline& deadline) {
   quiet_occt();
   const std::lock_guard<std::mutex> lock(occt_mutex);
-  XdeDocument xde;
-  const Handle(XCAFDoc_ShapeTool) st = xde.shapes();
-  TopoDS_Shape whole = shape.shape;
-  if (!curves.empty()) {  // the surfaces and the curves in one compound
-    BRep_Builder b;
-    TopoDS_Compound c;
-    b.MakeCompound(c);
-    if (!shape.shape.IsNull()) b.Add(c, shape.shape);
-    for (const auto& [name, edge] : curves) b.Add(c, edge);
-    whole = c;
-  }
-  const TDF_Label root = st->AddShape(whole, Standard_False);
-  set_name(root, product);
-  for (std::size_t i = 0; i < shape.faces.size(); ++i) {
-    if (shape.faces[i].IsNull()) continue;
-    const TDF_Label l = st->AddSubShape(root, shape.faces[i]);
-    if (!l.IsNull()) set_name(l, model.faces[i].name);
-  }
-  for (const auto& [name, edge] : curves) {
-    const TDF_Label l = st->AddSubShape(root, edge);
-    if (!l.IsNull()) set_name(l, name);
-  }
-  const std::string where = target.string();
-  write_atomically_via(target, [&](const std::filesystem::path& tmp) {
-    {  // OCCT reports a failed open without a reason: try it first to name the reason.
-      std::ofstream probe(tmp, std::ios::binary | std::ios::trunc);
-      if (!probe) throw DataError(where, "", std::string("cannot write: ") + std::strerror(errno));
+  const CadPlace place{target.string(), ""};
+  occt_call(place, "cannot write", [&] {
+    XdeDocument xde;
+    const Handle(XCAFDoc_ShapeTool) st = xde.shapes();
+    TopoDS_Shape whole = shape.shape;
+    if (!curves.empty()) {  // the surfaces and the curves in one compound
+      BRep_Builder b;
+      TopoDS_Compound c;
+      b.MakeCompound(c);
+      if (!shape.shape.IsNull()) b.Add(c, shape.shape);
+      for (const auto& [name, edge] : curves) b.Add(c, edge);
+      whole = c;
     }
-    IFSelect_ReturnStatus status = IFSelect_RetFail;
-    errno = 0;  // OCCT's stream sets it when a write fails (ENOSPC on a full disk)
-    if (format == CadFormat::Step) {
-      STEPCAFControl_Controller::Init();
-      // The schema must be set before the writer is constructed.
-      Interface_Static::SetCVal("write.step.schema", "AP242DIS");
-      Interface_Static::SetCVal("write.step.unit", "MM");
-      Interface_Static::SetIVal("write.stepcaf.subshapes.name", 1);
-      Interface_Static::SetCVal("write.step.product.name", product.c_str());
-      STEPCAFControl_Writer writer;
-      writer.SetNameMode(true);
-      if (!writer.Transfer(xde.doc(), STEPControl_AsIs))
-        throw DataError(where, "", "OpenCASCADE could not translate the shape to STEP");
-      status = writer.Write(tmp.c_str());
-    } else {
-      IGESControl_Controller::Init();
-      Interface_Static::SetIVal("write.iges.brep.mode", 1);  // faces keep their shells
-      Interface_Static::SetCVal("write.iges.unit", "MM");
-      IGESCAFControl_Writer writer;
-      writer.SetNameMode(true);
-      if (!writer.Transfer(xde.doc()))
-        throw DataError(where, "", "OpenCASCADE could not translate the shape to IGES");
-      status = writer.Write(tmp.c_str()) ? IFSelect_RetDone : IFSelect_RetFail;
+    const TDF_Label root = st->AddShape(whole, Standard_False);
+    set_name(root, product);
+    for (std::size_t i = 0; i < shape.faces.size(); ++i) {
+      if (shape.faces[i].IsNull()) continue;
+      const TDF_Label l = st->AddSubShape(root, shape.faces[i]);
+      if (!l.IsNull()) set_name(l, model.faces[i].name);
     }
-    if (status != IFSelect_RetDone) {
-      const int reason = errno;
-      throw DataError(where, "",
-                      std::string("writing failed: ") +
-                          (reason ? std::strerror(reason) : "OpenCASCADE's writer gave up"));
+    for (const auto& [name, edge] : curves) {
+      const TDF_Label l = st->AddSubShape(root, edge);
+      if (!l.IsNull()) set_name(l, name);
     }
+    const std::string where = target.string();
+    write_atomically_via(target, [&](const std::filesystem::path& tmp) {
+      {  // OCCT reports a failed open without a reason: try it first to name the reason.
+        std::ofstream probe(tmp, std::ios::binary | std::ios::trunc);
+        if (!probe)
+          throw DataError(where, "", std::string("cannot write: ") + std::strerror(errno));
+      }
+      IFSelect_ReturnStatus status = IFSelect_RetFail;
+      errno = 0;  // OCCT's stream sets it when a write fails (ENOSPC on a full disk)
+      if (format == CadFormat::Step) {
+        STEPCAFControl_Controller::Init();
+        // The schema must be set before the writer is constructed.
+        Interface_Static::SetCVal("write.step.schema", "AP242DIS");
+        Interface_Static::SetCVal("write.step.unit", "MM");
+        Interface_Static::SetIVal("write.stepcaf.subshapes.name", 1);
+        Interface_Static::SetCVal("write.step.product.name", product.c_str());
+        STEPCAFControl_Writer writer;
+        writer.SetNameMode(true);
+        const Handle(Message_ProgressIndicator) progress = deadline.indicator();
+        if (!occt_call_until(place, "translating the shape to STEP", deadline, [&] {
+              return writer.Transfer(xde.doc(), STEPControl_AsIs, nullptr, progress->Start());
+            }))
+          throw DataError(where, "", "OpenCASCADE could not translate the shape to STEP");
+        status = writer.Write(tmp.c_str());
+      } else {
+        IGESControl_Controller::Init();
+        Interface_Static::SetIVal("write.iges.brep.mode", 1);  // faces keep their shells
+        Interface_Static::SetCVal("write.iges.unit", "MM");
+        IGESCAFControl_Writer writer;
+        writer.SetNameMode(true);
+        const Handle(Message_ProgressIndicator) progress = deadline.indicator();
+        if (!occt_call_until(place, "translating the shape to IGES", deadline,
+                             [&] { return writer.Transfer(xde.doc(), progress->Start()); }))
+          throw DataError(where, "", "OpenCASCADE could not translate the shape to IGES");
+        status = writer.Write(tmp.c_str()) ? IFSelect_RetDone : IFSelect_RetFail;
+      }
+      if (status != IFSelect_RetDone) {
+        const int reason = errno;
+        throw DataError(where, "",
+                        std::string("writing failed: ") +
+                            (reason ? std::strerror(reason) : "OpenCASCADE's writer gave up"));
+      }
+    });
   });
 }
 
-CadFile read_cad_file(const std::filesystem::path& path, CadFormat format) {
+namespace {
+
+CadFile read_cad_file_unguarded(const std::filesystem::path& path, CadFormat format,
+                                const CadDeadline& deadline) {
   quiet_occt();
   const std::lock_guard<std::mutex> lock(occt_mutex);
   const std::string where = path.string();
+  const CadPlace place{where, ""};
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw DataError(where, "", "no such file");
   XdeDocument xde;
@@ -168,14 +182,20 @@ CadFile read_cad_file(const std::filesystem::path& path, CadFormat format) {
     reader.SetNameMode(true);
     if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
       throw DataError(where, "", "OpenCASCADE cannot read it as STEP");
-    if (!reader.Transfer(xde.doc())) throw DataError(where, "", "no shape in the STEP file");
+    const Handle(Message_ProgressIndicator) progress = deadline.indicator();
+    if (!occt_call_until(place, "translating the STEP file", deadline,
+                         [&] { return reader.Transfer(xde.doc(), progress->Start()); }))
+      throw DataError(where, "", "no shape in the STEP file");
   } else {
     IGESControl_Controller::Init();
     IGESCAFControl_Reader reader;
     reader.SetNameMode(true);
     if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
       throw DataError(where, "", "OpenCASCADE cannot read it as IGES");
-    if (!reader.Transfer(xde.doc())) throw DataError(where, "", "no shape in the IGES file");
+    const Handle(Message_ProgressIndicator) progress = deadline.indicator();
+    if (!occt_call_until(place, "translating the IGES file", deadline,
+                         [&] { return reader.Transfer(xde.doc(), progress->Start()); }))
+      throw DataError(where, "", "no shape in the IGES file");
     // The XDE reader names only top-level shapes; face names are the labels of the face
     // entities (IGES labels hold 8 characters), found through the transfer's results.
     const Handle(Interface_InterfaceModel) model = reader.WS()->Model();
@@ -217,6 +237,14 @@ CadFile read_cad_file(const std::filesystem::path& path, CadFormat format) {
     out.faces.emplace_back(name, TopoDS::Face(e.Current()));
   }
   return out;
+}
+
+}  // namespace
+
+CadFile read_cad_file(const std::filesystem::path& path, CadFormat format,
+                      const CadDeadline& deadline) {
+  return occt_call({path.string(), ""}, "cannot read",
+                   [&] { return read_cad_file_unguarded(path, format, deadline); });
 }
 
 }  // namespace pl

@@ -76,16 +76,21 @@ Handle(Geom_BSplineSurface) occt_surface(const CadSurface& s) {
   return new Geom_BSplineSurface(poles, w, ku, kv, mu, mv, s.degree_u, s.degree_v);
 }
 
-SewnShape sew_model(const CadModel& model, double tolerance) {
+SewnShape sew_model(const CadModel& model, double tolerance, const std::string& source,
+                    const CadDeadline& deadline) {
   std::vector<TopoDS_Face> made;
   BRepBuilderAPI_Sewing sewing(tolerance);
   for (const CadFace& f : model.faces) {
-    BRepBuilderAPI_MakeFace mf(occt_surface(f.surface), Precision::Confusion());
-    if (!mf.IsDone()) throw std::runtime_error(f.name + ": OpenCASCADE cannot make a face of it");
-    made.push_back(mf.Face());
+    made.push_back(occt_call({source, f.name}, "OpenCASCADE cannot make a face of it", [&] {
+      BRepBuilderAPI_MakeFace mf(occt_surface(f.surface), Precision::Confusion());
+      if (!mf.IsDone()) throw std::runtime_error("BRepBuilderAPI_MakeFace failed");
+      return mf.Face();
+    }));
     sewing.Add(made.back());
   }
-  sewing.Perform();
+  const Handle(Message_ProgressIndicator) progress = deadline.indicator();
+  occt_call_until({source, ""}, "sewing the faces", deadline,
+                  [&] { sewing.Perform(progress->Start()); });
   SewnShape out;
   const TopoDS_Shape sewn = sewing.SewedShape();
   // Closed shells become solids; open shells and lone faces stay as they are.
@@ -132,7 +137,8 @@ SewnShape sew_model(const CadModel& model, double tolerance) {
   TopExp::MapShapes(out.shape, TopAbs_FACE, in_shape);
   for (const TopoDS_Face& f : made) {
     TopoDS_Shape s = sewing.IsModified(f) ? sewing.Modified(f) : TopoDS_Shape(f);
-    if (s.ShapeType() != TopAbs_FACE) {  // a face the sewing split: its first part
+    // (A face the sewing dropped is a null shape, whose type must not be asked: SIGSEGV.)
+    if (!s.IsNull() && s.ShapeType() != TopAbs_FACE) {  // a face the sewing split: its first part
       TopExp_Explorer e(s, TopAbs_FACE);
       s = e.More() ? e.Current() : TopoDS_Shape();
     }

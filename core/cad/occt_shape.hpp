@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/cad/cad_model.hpp"
+#include "core/cad/occt_boundary.hpp"
 
 namespace pl {
 
@@ -21,8 +22,10 @@ struct SewnShape {
 };
 
 // Sews the model's faces with the given tolerance (merging edges closer than it); every closed
-// shell becomes a solid, oriented so that its faces' normals point out of it.
-SewnShape sew_model(const CadModel& model, double tolerance);
+// shell becomes a solid, oriented so that its faces' normals point out of it. Throws DataError
+// (source, the face, the reason) where OCCT fails, and once the deadline passes.
+SewnShape sew_model(const CadModel& model, double tolerance, const std::string& source = "",
+                    const CadDeadline& deadline = CadDeadline());
 
 // What the sewing achieved, measured on any shape (a sewn model, or a file read back):
 //   free edges: edges used by one face only (seams of closed faces and degenerate edges aside);

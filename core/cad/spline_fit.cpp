@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <utility>
 
 #include "core/analysis/scene_analysis.hpp"  // angle_deg
@@ -155,6 +156,20 @@ class GridCache {
   std::vector<Row> rows_;
 };
 
+// The bounds of a fit, checked before `work` more grid points: the deadline and the fit's own
+// bound (the first fit is always made, so that there is a result), then the bound shared with
+// the other fits of the export. Returns the bound that refuses it, or counts it in `done`.
+std::optional<FitEnd> take_work(std::size_t& done, std::size_t work, const FitTolerance& tol) {
+  if (done > 0) {
+    if (std::chrono::steady_clock::now() >= tol.deadline) return FitEnd::Deadline;
+    if (done + work > tol.max_work) return FitEnd::Work;
+  }
+  if (tol.shared_work && tol.shared_work->fetch_add(work) + work > tol.max_shared_work)
+    return FitEnd::SharedWork;
+  done += work;
+  return std::nullopt;
+}
+
 }  // namespace
 
 int fit_samples_per_span(int p, int spans) {
@@ -168,6 +183,11 @@ CurveFit fit_curve(const CurveFunction& g, int p, const FitTolerance& tol) {
     const int per = fit_samples_per_span(p, span_count(U));
     const std::size_t n = U.size() - p - 1;
     const Samples t = span_samples(U, per);
+    // The samples and the check points, bounded before the work.
+    if (const auto end = take_work(out.work, t.t.size() * 5, tol)) {
+      out.end = *end;
+      break;
+    }
     std::vector<CurvePoint> G(t.t.size());
     g(t.t, G);
     // Unknowns: P_1 .. P_{n-2}; the ends are the curve's end points.
@@ -204,6 +224,7 @@ CurveFit fit_curve(const CurveFunction& g, int p, const FitTolerance& tol) {
     out.position_deviation = dp, out.tangent_deviation_deg = da;
     out.check_points = static_cast<int>(check.t.size());
     out.converged = dp <= tol.position && da <= tol.normal_deg;
+    out.end = out.converged ? FitEnd::Converged : FitEnd::Spans;
     if (out.converged || !bisect_spans(p, U, failed, tol.max_spans)) break;
   }
   return out;
@@ -239,6 +260,13 @@ SurfaceFit fit_surface(const SurfaceFunction& f, const std::array<CadCurve, 4>& 
     const int su = fit_samples_per_span(p, span_count(U)),
               sv = fit_samples_per_span(q, span_count(V));
     const Samples tu = span_samples(U, su), tv = span_samples(V, sv);
+    const Samples cu = span_samples(U, 4 * su), cv = span_samples(V, 4 * sv);
+    // The samples and the check grid, bounded before the work.
+    if (const auto end =
+            take_work(out.work, tu.t.size() * tv.t.size() + cu.t.size() * cv.t.size(), tol)) {
+      out.end = *end;
+      break;
+    }
     std::vector<SurfacePoint> F;
     cache.evaluate(tu.t, tv.t, F);
     const Eigen::MatrixXd Nu = basis_matrix(p, U, tu.t), Nv = basis_matrix(q, V, tv.t);
@@ -260,7 +288,6 @@ SurfaceFit fit_surface(const SurfaceFunction& f, const std::array<CadCurve, 4>& 
     }
     // Check on a grid four times denser than the samples; where it fails, bisect the span in
     // the direction in which the failing cell is longer in space (both when comparable).
-    const Samples cu = span_samples(U, 4 * su), cv = span_samples(V, 4 * sv);
     std::vector<SurfacePoint> truth, fit;
     cache.evaluate(cu.t, cv.t, truth);
     evaluate_grid(s, cu.t, cv.t, fit);
@@ -292,6 +319,7 @@ SurfaceFit fit_surface(const SurfaceFunction& f, const std::array<CadCurve, 4>& 
     out.check_points = static_cast<int>(std::max(cu.t.size(), cv.t.size()));
     out.singular_normals = singular;
     out.converged = dp <= tol.position && dn <= tol.normal_deg;
+    out.end = out.converged ? FitEnd::Converged : FitEnd::Spans;
     if (out.converged) break;
     // The limit counts the spans this fit adds to those of the sides.
     const bool more_u = bisect_spans(p, U, fail_u, tol.max_spans + span_count(base_u));

@@ -5,6 +5,9 @@
 #pragma once
 
 #include <array>
+#include <atomic>
+#include <chrono>
+#include <cstddef>
 #include <functional>
 #include <span>
 
@@ -13,10 +16,32 @@
 
 namespace pl {
 
+// A fit's work is the number of grid points it evaluates and compares (fit samples and check
+// points, summed over its refinements): it bounds the time of one fit whatever the function.
+// A refinement that would pass max_work is not started; one that would start after the
+// deadline neither. Either way the fit reports failure, saying which bound stopped it.
+inline constexpr std::size_t kDefaultFitWork = std::size_t(1) << 21;
+// The same summed over every fit of one export (shared by the fits running in parallel).
+inline constexpr std::size_t kDefaultExportWork = std::size_t(1) << 24;
+
 struct FitTolerance {
   double position = 1e-3;    // scene units
   double normal_deg = 0.05;  // surfaces: normal angle; curves: tangent angle
   int max_spans = 64;        // per direction; beyond it the fit reports failure
+  std::size_t max_work = kDefaultFitWork;
+  std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+  // Optional: the work of all fits together, and its bound.
+  std::atomic<std::size_t>* shared_work = nullptr;
+  std::size_t max_shared_work = kDefaultExportWork;
+};
+
+// Why a fit ended.
+enum class FitEnd {
+  Converged,   // within the tolerance
+  Spans,       // no span left to split (max_spans, or spans too short)
+  Work,        // the next refinement would pass max_work
+  SharedWork,  // the next refinement would pass max_shared_work
+  Deadline,    // the deadline passed
 };
 
 // A surface point with its first derivatives in the piece's (u, v).
@@ -38,6 +63,8 @@ struct CurveFit {
   double tangent_deviation_deg = 0;
   int check_points = 0;
   bool converged = false;
+  FitEnd end = FitEnd::Spans;
+  std::size_t work = 0;  // grid points evaluated and compared
 };
 
 // Degree p, uniform knots, end points pinned to g(0) and g(1).
@@ -51,6 +78,8 @@ struct SurfaceFit {
   int check_points = 0;      // per direction
   int singular_normals = 0;  // check points where the fitted function has no normal
   bool converged = false;
+  FitEnd end = FitEnd::Spans;
+  std::size_t work = 0;  // grid points evaluated and compared
 };
 
 // sides (each running in increasing parameter): 0: v = 0, 1: u = 1, 2: v = 1, 3: u = 0; their

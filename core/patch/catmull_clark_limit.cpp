@@ -10,6 +10,7 @@
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/System/omstream.hh>
 #include <algorithm>
+#include <array>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -72,6 +73,22 @@ class Merger {
   std::vector<char> seen_;
   std::vector<int> touched_;
 };
+
+// A block of kBlock consecutive base vertices' weights in one vertex: the primvar with which
+// the refiner interpolates kBlock columns of the stencil matrix at once.
+constexpr int kBlock = 64;
+struct WeightBlock {
+  std::array<double, kBlock> w;
+  void Clear(void* = nullptr) { w.fill(0.0); }
+  void AddWithWeight(const WeightBlock& s, double x) {
+    for (int k = 0; k < kBlock; ++k) w[k] += x * s.w[k];
+  }
+};
+
+// Dense columns cost base vertices x refined vertices; sparse rows cost the stencils' entries
+// times the refiner's fan-in, which near an n-ring is n per vertex at every isolation level.
+// Below this product the columns are taken (it bounds their time to about a second).
+constexpr double kMaxDenseWork = 4e8;
 
 }  // namespace
 
@@ -223,46 +240,108 @@ CatmullClarkLimit::CatmullClarkLimit(std::size_t n, const std::vector<std::vecto
 
 // OpenSubdiv's StencilTableFactory merges each added weight by a linear search through the
 // stencil being built: next to an n-valent vertex, where every stencil holds the whole ring,
-// that is O(n^2) per vertex and O(n^3) in all (6 s for a 256-gon). Here every level is
-// interpolated with stencils as the primvar and merged once through a dense row: O(n) per
-// vertex.
+// that is O(n^2) per vertex and O(n^3) in all (6 s for a 256-gon). Two ways instead, both
+// linear in what they produce:
+// - sparse rows: every level interpolated with stencils as the primvar, merged once through a
+//   dense row: O(entries x fan-in). Near an n-ring every isolated vertex's stencil holds the
+//   ring, at every one of the 10 levels, around every feature the ring touches (a valence-200
+//   fan: 80,000 vertices of ~190 entries, 15 million entries made from ten times as many
+//   appended ones: seconds);
+// - dense columns: kBlock base vertices at a time, their unit weights interpolated as a
+//   kBlock-wide primvar through every level (and the end-cap points), the non-zeros appended to
+//   the stencils in vertex order: O(base vertices x refined vertices), arithmetic only. For
+//   the small meshes that hold a big ring (the fan: 201 x 80,000) this is a hundred times less.
+// The cheaper by those counts is taken. Both give the same stencils (the same sums, up to
+// rounding); a weight that sums to exactly zero is left out of a dense column.
 void CatmullClarkLimit::build_stencils() {
   const Far::TopologyRefiner& r = *osd_->refiner;
-  std::vector<StencilBuild> all(r.GetNumVerticesTotal());
   const int base = r.GetLevel(0).GetNumVertices();
-  for (int v = 0; v < base; ++v) all[v].e = {{v, 1.0}};
+  const Far::StencilTableReal<double>* local = osd_->patches->GetLocalPointStencilTable<double>();
+  const std::size_t refined = r.GetNumVerticesTotal();
+  const std::size_t total = refined + (local ? local->GetNumStencils() : 0);
   const Far::PrimvarRefinerReal<double> primvar(r);
-  Merger merger(base);
-  for (int level = 1, first = 0; level <= r.GetMaxLevel(); ++level) {
-    const int before = r.GetLevel(level - 1).GetNumVertices();
-    StencilBuild* src = all.data() + first;
-    StencilBuild* dst = src + before;
-    primvar.Interpolate(level, src, dst);
-    for (int v = 0; v < r.GetLevel(level).GetNumVertices(); ++v) {
-      for (const auto& [u, w] : dst[v].e) merger.add(u, w);
-      merger.take(dst[v]);
-    }
-    first += before;
-  }
-  // End-cap points: each a stencil over the last level's vertices (an extraordinary vertex's
-  // whole ring for the points at it).
-  if (const auto* local = osd_->patches->GetLocalPointStencilTable<double>()) {
-    const std::size_t refined = all.size();
-    all.resize(refined + local->GetNumStencils());
-    for (int i = 0; i < local->GetNumStencils(); ++i) {
-      const auto st = local->GetStencil(i);
-      for (int k = 0; k < st.GetSize(); ++k)
-        for (const auto& [v, w] : all.at(st.GetVertexIndices()[k]).e)
-          merger.add(v, w * st.GetWeights()[k]);
-      merger.take(all[refined + i]);
-    }
-  }
-  std::vector<int> offsets, sizes, sources;
+  std::vector<int> offsets(total), sizes(total, 0), sources;
   std::vector<double> weights;
-  for (const StencilBuild& b : all) {
-    offsets.push_back(static_cast<int>(sources.size()));
-    sizes.push_back(static_cast<int>(b.e.size()));
-    for (const auto& [v, w] : b.e) sources.push_back(v), weights.push_back(w);
+  if (double(base) * double(refined) <= kMaxDenseWork) {
+    // Twice through the blocks: the non-zeros counted, then written in place (appending to
+    // growing stencils, block after block, spent more time in the allocator than in the sums).
+    std::vector<WeightBlock> col(refined);
+    std::vector<int> fill;
+    for (int pass = 0; pass < 2; ++pass) {
+      if (pass == 1) {
+        std::size_t at = 0;
+        for (std::size_t v = 0; v < total; ++v) offsets[v] = static_cast<int>(at), at += sizes[v];
+        sources.resize(at);
+        weights.resize(at);
+        fill = offsets;
+      }
+      for (int j0 = 0; j0 < base; j0 += kBlock) {
+        const int nb = std::min(kBlock, base - j0);
+        for (int v = 0; v < base; ++v) {
+          col[v].Clear();
+          if (v >= j0 && v < j0 + nb) col[v].w[v - j0] = 1.0;
+        }
+        for (int level = 1, first = 0; level <= r.GetMaxLevel(); ++level) {
+          const int before = r.GetLevel(level - 1).GetNumVertices();
+          WeightBlock* src = col.data() + first;
+          WeightBlock* dst = src + before;
+          primvar.Interpolate(level, src, dst);
+          first += before;
+        }
+        auto emit = [&](std::size_t v, const WeightBlock& c) {
+          for (int k = 0; k < nb; ++k)
+            if (c.w[k] != 0.0) {
+              if (pass == 0) {
+                ++sizes[v];
+              } else {
+                sources[fill[v]] = j0 + k;
+                weights[fill[v]++] = c.w[k];
+              }
+            }
+        };
+        for (std::size_t v = 0; v < refined; ++v) emit(v, col[v]);
+        if (local) {
+          WeightBlock acc;
+          for (int i = 0; i < local->GetNumStencils(); ++i) {
+            const auto st = local->GetStencil(i);
+            acc.Clear();
+            for (int k = 0; k < st.GetSize(); ++k)
+              acc.AddWithWeight(col[st.GetVertexIndices()[k]], st.GetWeights()[k]);
+            emit(refined + i, acc);
+          }
+        }
+      }
+    }
+  } else {
+    std::vector<StencilBuild> all(total);
+    for (int v = 0; v < base; ++v) all[v].e = {{v, 1.0}};
+    Merger merger(base);
+    for (int level = 1, first = 0; level <= r.GetMaxLevel(); ++level) {
+      const int before = r.GetLevel(level - 1).GetNumVertices();
+      StencilBuild* src = all.data() + first;
+      StencilBuild* dst = src + before;
+      primvar.Interpolate(level, src, dst);
+      for (int v = 0; v < r.GetLevel(level).GetNumVertices(); ++v) {
+        for (const auto& [u, w] : dst[v].e) merger.add(u, w);
+        merger.take(dst[v]);
+      }
+      first += before;
+    }
+    // End-cap points: each a stencil over the last level's vertices (an extraordinary vertex's
+    // whole ring for the points at it).
+    if (local)
+      for (int i = 0; i < local->GetNumStencils(); ++i) {
+        const auto st = local->GetStencil(i);
+        for (int k = 0; k < st.GetSize(); ++k)
+          for (const auto& [v, w] : all.at(st.GetVertexIndices()[k]).e)
+            merger.add(v, w * st.GetWeights()[k]);
+        merger.take(all[refined + i]);
+      }
+    for (std::size_t v = 0; v < total; ++v) {
+      offsets[v] = static_cast<int>(sources.size());
+      sizes[v] = static_cast<int>(all[v].e.size());
+      for (const auto& [u, w] : all[v].e) sources.push_back(u), weights.push_back(w);
+    }
   }
   osd_->stencils = std::make_unique<OwnStencilTable>(base, offsets, sizes, sources, weights);
 }
@@ -338,6 +417,22 @@ std::vector<std::pair<int, Jet>> CatmullClarkLimit::basis(int ptex, Vec2 uv) con
       out.push_back(e);
   }
   return out;
+}
+
+Vec3 CatmullClarkLimit::stencil_point(int ptex, Vec2 uv, std::span<const Vec3> points) const {
+  const double u = std::clamp(uv.x, 0.0, 1.0), v = std::clamp(uv.y, 0.0, 1.0);
+  const Far::PatchTable::PatchHandle* h = osd_->map->FindPatch(ptex, u, v);
+  if (!h) throw std::logic_error("OpenSubdiv found no patch for a face parameter");
+  double w[20];
+  osd_->patches->EvaluateBasis(*h, u, v, w);
+  const auto cvs = osd_->patches->GetPatchVertices(*h);
+  Vec3 p(0);
+  for (int i = 0; i < cvs.size(); ++i) {
+    const auto vs = stencil_vertices(cvs[i]);
+    const auto ws = stencil_weights(cvs[i]);
+    for (std::size_t k = 0; k < vs.size(); ++k) p += (w[i] * ws[k]) * points[vs[k]];
+  }
+  return p;
 }
 
 Vec3 CatmullClarkLimit::limit_point(int ptex, Vec2 uv, const std::vector<Vec3>& points) const {

@@ -30,8 +30,9 @@ namespace pl {
 class CatmullClarkLimit {
  public:
   // At most kMaxValence vertices in a face and faces around a vertex: the patch points near such
-  // a face or vertex each hold the whole ring, so building them costs O(n^2) time and memory
-  // (a 10,000-sided face would take gigabytes). At most kMaxVertices vertices.
+  // a face or vertex each hold the whole ring, so building them costs O(n^2) memory and at least
+  // as much time (a 10,000-sided face would take gigabytes; build_stencils says how the time is
+  // kept near that). At most kMaxVertices vertices.
   static constexpr int kMaxValence = 256;
   static constexpr std::size_t kMaxVertices = std::size_t(1) << 16;
 
@@ -78,6 +79,15 @@ class CatmullClarkLimit {
   // stencil accumulation), a path independent of basis(): used for boundary deviation. Slower than
   // basis() (a stencil table per call).
   Vec3 limit_point(int ptex, Vec2 uv, const std::vector<Vec3>& points) const;
+
+  // The same limit point summed over the base vertices: the patch's basis (found through the
+  // patch map built once) times its patch points' stencils, O(m) for the m stencil entries of
+  // that patch. limit_point builds a patch map over the whole patch table and merges stencils by
+  // linear search on every call: O(patches + m^2), which made the boundary samples of `analyze`
+  // on a 256-gon or a valence-200 fan take tens of seconds. The boundary points of the patches
+  // (Patch::boundary_point) come from here; limit_point stays as the independent reference of
+  // the tests.
+  Vec3 stencil_point(int ptex, Vec2 uv, std::span<const Vec3> points) const;
 
  private:
   void build_stencils();

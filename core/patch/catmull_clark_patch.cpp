@@ -116,7 +116,7 @@ std::vector<BezierCurve> CatmullClarkFacePatch::boundary_curves() const {
 }
 
 Vec3 CatmullClarkFacePatch::boundary_point(int side, double t) const {
-  return limit_->limit_point(face_, domain_.side_point(side, t), points_);
+  return limit_->stencil_point(face_, domain_.side_point(side, t), points_);
 }
 
 CatmullClarkPatch::CatmullClarkPatch(std::vector<Vec3> vertices,
@@ -175,7 +175,7 @@ std::vector<BezierCurve> CatmullClarkPatch::boundary_curves() const {
 
 Vec3 CatmullClarkPatch::boundary_point(int side, double t) const {
   const Strip s = strip_of(domain_.side_point(side, t), limit_->ptex_count());
-  return limit_->limit_point(s.face, s.uv, points_);
+  return limit_->stencil_point(s.face, s.uv, points_);
 }
 
 std::vector<std::shared_ptr<Patch>> CatmullClarkPatch::surface_pieces() const {

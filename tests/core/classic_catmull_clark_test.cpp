@@ -240,7 +240,7 @@ double angle_between_deg(const Vec3& a, const Vec3& b) {
 }
 
 TEST(ClassicCatmullClark, SurfacePiecesAreTheFacesOfTheAtlasAndOfOpenSubdiv) {
-  double vs_osd = 0, vs_atlas = 0, side_vs_eval = 0;
+  double vs_osd = 0, vs_atlas = 0, side_vs_eval = 0, side_vs_osd = 0;
   for (const Mesh& m : {cube(), grid(5), twisted_grid()}) {
     const CatmullClarkPatch cc(m.v, m.f);
     const auto pieces = cc.surface_pieces();
@@ -260,23 +260,29 @@ TEST(ClassicCatmullClark, SurfacePiecesAreTheFacesOfTheAtlasAndOfOpenSubdiv) {
         b.su /= F, b.suu /= F * F, b.suv /= F;
         vs_atlas = std::max(vs_atlas, jet_diff(a, b) / size);
       }
-      // boundary_point (OpenSubdiv limit stencils) against the piece's own evaluation.
+      // boundary_point (the patch's basis times its points' stencils over the base vertices)
+      // against the piece's own evaluation (its cached patch points) and against OpenSubdiv's
+      // own limit stencils (LimitStencilTableFactory, limit_point).
       for (int side = 0; side < 4; ++side)
-        for (double t : {0.0, 0.3, 0.5, 0.91, 1.0})
-          side_vs_eval =
-              std::max(side_vs_eval, max_abs(piece.boundary_point(side, t) -
-                                             piece.evaluate(piece.domain().side_point(side, t)).p) /
-                                         size);
+        for (double t : {0.0, 0.3, 0.5, 0.91, 1.0}) {
+          const Vec2 x = piece.domain().side_point(side, t);
+          const Vec3 b = piece.boundary_point(side, t);
+          side_vs_eval = std::max(side_vs_eval, max_abs(b - piece.evaluate(x).p) / size);
+          side_vs_osd =
+              std::max(side_vs_osd, max_abs(b - cc.limit().limit_point(int(f), x, m.v)) / size);
+        }
     }
   }
   std::printf(
       "figure catmull_clark_pieces_vs_osd_limit_stencils_relative %.3e\n"
       "figure catmull_clark_pieces_vs_atlas_relative %.3e\n"
-      "figure catmull_clark_boundary_point_vs_evaluate_relative %.3e\n",
-      vs_osd, vs_atlas, side_vs_eval);
+      "figure catmull_clark_boundary_point_vs_evaluate_relative %.3e\n"
+      "figure catmull_clark_boundary_point_vs_osd_limit_stencils_relative %.3e\n",
+      vs_osd, vs_atlas, side_vs_eval, side_vs_osd);
   EXPECT_LT(vs_osd, 1e-12);
   EXPECT_LT(vs_atlas, 1e-12);
   EXPECT_LT(side_vs_eval, 1e-12);
+  EXPECT_LT(side_vs_osd, 1e-12);
 }
 
 TEST(ClassicCatmullClark, AdjacentPiecesShareTheirEdgesWithOneNormal) {

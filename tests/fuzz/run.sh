@@ -13,17 +13,26 @@ shift || true
 dir=build-fuzz
 CC=clang CXX=clang++ cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DPATCHLAB_FUZZ=ON >/dev/null
-cmake --build "$dir" --target scene_reader_fuzz gbp_reader_fuzz scene_eval_fuzz patchlab_fuzz_seeds
+cmake --build "$dir" --target scene_reader_fuzz gbp_reader_fuzz scene_eval_fuzz cad_writer_fuzz \
+  patchlab_fuzz_seeds
 
 # Seeds: the scenes of assets/ and the inputs the library generates (every patch type it writes,
 # networks, .gbp files); the evaluation target's inputs start with a density byte.
 seeds="$dir/seeds"
 rm -rf "$seeds"
-mkdir -p "$seeds/scene" "$seeds/gbp" "$seeds/eval"
+mkdir -p "$seeds/scene" "$seeds/gbp" "$seeds/eval" "$seeds/cad"
 cp assets/*.json assets/classic/*.json "$seeds/scene/"
 "$dir/tests/fuzz/patchlab_fuzz_seeds" "$seeds" >/dev/null
 for f in "$seeds"/scene/* "$seeds"/gbp/*; do
   { printf '\003'; cat "$f"; } >"$seeds/eval/$(basename "$f")"
+done
+# The CAD writer's inputs start with a format byte (even: STEP, odd: IGES): each scene once as
+# STEP, the small ones once more as IGES.
+for f in "$seeds"/scene/*; do
+  { printf '\000'; cat "$f"; } >"$seeds/cad/step-$(basename "$f")"
+  if [ "$(wc -c <"$f")" -lt 8192 ]; then
+    { printf '\001'; cat "$f"; } >"$seeds/cad/iges-$(basename "$f")"
+  fi
 done
 
 mkdir -p "$dir/findings"
@@ -50,4 +59,5 @@ run() {  # target, seed folder, extra options
 run scene_reader_fuzz scene -dict=tests/fuzz/scene.dict "$@"
 run gbp_reader_fuzz gbp "$@"
 run scene_eval_fuzz eval -dict=tests/fuzz/scene.dict "$@"
+run cad_writer_fuzz cad -dict=tests/fuzz/scene.dict "$@"
 exit $status
