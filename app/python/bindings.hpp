@@ -37,6 +37,10 @@ struct PySamples {
   std::shared_ptr<PatchEvaluator> evaluator;
 };
 
+// PatchSamples.evaluate_at (point_evaluation.cpp).
+py::dict evaluate_points(const PySamples& samples,
+                         const py::array_t<double, py::array::c_style | py::array::forcecast>& uv);
+
 void bind_errors(py::module_& m);
 void bind_scene(py::module_& m);
 void bind_samples(py::module_& m);

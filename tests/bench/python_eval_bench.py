@@ -8,11 +8,17 @@ the machine may be shared). Prints "figure NAME VALUE UNIT" lines:
   cpp_eval_msamples_per_s      PatchEvaluator::evaluate_all of the same samples, timed in C++
                                (the loop of patchlab_bench's gb_full_eval figure)
   python_eval_over_cpp         the first over the second (throughput kept from Python)
+  python_eval_at_msamples_per_s   PatchSamples.evaluate_at of the same 1,000,141 domain points
+                               (new output arrays, filled in parallel; no tessellation)
+  python_eval_at_over_cpp      that over evaluate_all, timed alternately again (_2)
   python_move_ms               PatchSamples.move_control_point of inner point P^1_{2,1} at
                                100,501 samples, from Python, the changed samples returned
   cpp_drag_ms                  PatchEvaluator::move_control_point of the same point, timed in C++
                                (the loop of patchlab_bench's gb_drag_ms_100k figure)
   python_move_over_cpp_drag    the first over the second (cost of a move from Python)
+  python_move_run_ms, cpp_drag_run_ms, python_move_over_cpp_drag_run
+                               the same in runs of 10 moves back to back (a drag), the two
+                               sides alternating run by run
 
 The two sides of each ratio alternate call by call, so both see the same background load; the
 figures are medians. The scene keeps its tessellation between evaluations, as any Scene does.
@@ -60,6 +66,17 @@ def evaluation(scene, density, repeats):
     figure("python_eval_msamples_per_s", py_rate, "Msamples/s")
     figure("cpp_eval_msamples_per_s", cpp_rate, "Msamples/s")
     figure("python_eval_over_cpp", py_rate / cpp_rate, "x")
+    # The same 1e6 domain points through PatchSamples.evaluate_at: new arrays, no tessellation.
+    uv = np.array(samples.params)
+    at, cpp = [], []
+    for _ in range(repeats):
+        at.append(time_ms(lambda: samples.evaluate_at(uv)))
+        cpp += _timing.evaluate_all_ms(samples, 1)
+    at_rate = n / (statistics.median(at) * 1e3)
+    cpp_rate = n / (statistics.median(cpp) * 1e3)
+    figure("python_eval_at_msamples_per_s", at_rate, "Msamples/s")
+    figure("cpp_eval_msamples_per_s_2", cpp_rate, "Msamples/s")
+    figure("python_eval_at_over_cpp", at_rate / cpp_rate, "x")
     return py_rate
 
 
@@ -78,6 +95,17 @@ def drag(scene, density, repeats):
     figure("python_move_ms", py_ms, "ms")
     figure("cpp_drag_ms", cpp_ms, "ms")
     figure("python_move_over_cpp_drag", py_ms / cpp_ms, "x")
+    # A drag: runs of moves back to back (as gb_bench's loop), the two sides alternating by run.
+    block, python, cpp = 10, [], []
+    for i in range(max(1, repeats // block)):
+        for j in range(block):
+            p[2] += 1e-3 if j % 2 == 0 else -1e-3
+            python.append(time_ms(lambda: samples.move_control_point(k, p)))
+        cpp += _timing.move_control_point_ms(samples, k, block)
+    py_block, cpp_block = statistics.median(python), statistics.median(cpp)
+    figure("python_move_run_ms", py_block, "ms")
+    figure("cpp_drag_run_ms", cpp_block, "ms")
+    figure("python_move_over_cpp_drag_run", py_block / cpp_block, "x")
     return py_ms
 
 

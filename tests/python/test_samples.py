@@ -141,3 +141,35 @@ def test_a_bad_control_point_or_position_raises():
         with pytest.raises((ValueError, TypeError)):
             s.move_control_point(3, bad)
     assert np.array_equal(s.positions, before)
+
+
+@pytest.mark.parametrize("scene_file", [ASSETS / "default.json", ASSETS / "gb-concave-l.json",
+                                        ASSETS / "classic" / "nurbs.json"])
+def test_evaluate_at_the_sample_points_gives_the_samples(scene_file):
+    for s in patchlab.load(scene_file).evaluate(density=10):
+        at = s.evaluate_at(s.params)
+        regular = ~at["singular"]
+        assert regular.sum() > len(s) // 2  # singular: collapsed corners, the poles' sides
+        for name in ("positions", "su", "sv", "suu", "suv", "svv"):
+            assert np.array_equal(at[name], getattr(s, name)), name
+        for name in ("normals", "mean_curvature", "gaussian_curvature", "k_min", "k_max"):
+            assert np.array_equal(at[name][regular], getattr(s, name)[regular]), name
+        # Where Su x Sv vanishes, the flag says so and the values are zeros, never NaN.
+        assert (np.linalg.norm(np.cross(at["su"], at["sv"]), axis=1)[~regular] == 0).all()
+        assert np.isfinite(at["normals"]).all()
+
+
+def test_evaluate_at_takes_points_of_the_domain_only():
+    (s,) = patchlab.load(ASSETS / "bezier-wave.json").evaluate(density=4)
+    inside = np.array([[0.0, 0.0], [1.0, 1.0], [0.25, 0.75], [0.5, 0.0]])
+    at = s.evaluate_at(inside)
+    assert at["positions"].shape == (4, 3)
+    S = bezier_surface(s.control_points, 4, 4, inside)[0]
+    assert np.abs(at["positions"] - S).max() <= 1e-14
+    assert s.evaluate_at(np.zeros((0, 2)))["positions"].shape == (0, 3)
+    for bad in (np.array([[1.5, 0.5]]), np.array([[0.5, -1e-6]]), np.array([[np.nan, 0.5]]),
+                np.zeros((3, 3)), np.zeros(4)):
+        with pytest.raises(ValueError):
+            s.evaluate_at(bad)
+    with pytest.raises((ValueError, TypeError)):
+        s.evaluate_at("points")
