@@ -39,7 +39,8 @@ struct PySamples {
 
 // PatchSamples.evaluate_at (point_evaluation.cpp).
 py::dict evaluate_points(const PySamples& samples,
-                         const py::array_t<double, py::array::c_style | py::array::forcecast>& uv);
+                         const py::array_t<double, py::array::c_style | py::array::forcecast>& uv,
+                         const std::optional<py::dict>& out);
 
 void bind_errors(py::module_& m);
 void bind_scene(py::module_& m);

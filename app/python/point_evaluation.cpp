@@ -41,8 +41,34 @@ constexpr std::size_t kChunk = 512;  // samples per evaluate_many call, as in ev
 
 }  // namespace
 
+namespace {
+
+// The writable, C-contiguous buffer of `dtype` and shape (n, columns) under the arrays of an
+// earlier evaluate_at result (`out[key].base`); ValueError for anything else.
+py::array out_buffer(const py::dict& out, const char* key, const py::dtype& dtype, std::size_t n,
+                     std::size_t columns) {
+  const auto bad = [&] {
+    return py::value_error(
+        "out takes a dict returned by evaluate_at for the same number of points");
+  };
+  if (!out.contains(key)) throw bad();
+  const py::object view = out[key];
+  if (!py::isinstance<py::array>(view)) throw bad();
+  const py::object base = view.attr("base");
+  if (!py::isinstance<py::array>(base)) throw bad();
+  const auto a = py::reinterpret_borrow<py::array>(base);
+  if (!a.dtype().is(dtype) || a.ndim() != 2 || std::size_t(a.shape(0)) != n ||
+      std::size_t(a.shape(1)) != columns || !(a.flags() & py::array::c_style) || !a.writeable() ||
+      !a.owndata())
+    throw bad();
+  return a;
+}
+
+}  // namespace
+
 py::dict evaluate_points(const PySamples& s,
-                         const py::array_t<double, py::array::c_style | py::array::forcecast>& uv) {
+                         const py::array_t<double, py::array::c_style | py::array::forcecast>& uv,
+                         const std::optional<py::dict>& out) {
   if (uv.ndim() != 2 || uv.shape(1) != 2)
     throw py::value_error("evaluate_at takes an N x 2 array of domain points (u, v)");
   const std::size_t n = static_cast<std::size_t>(uv.shape(0));
@@ -74,11 +100,14 @@ py::dict evaluate_points(const PySamples& s,
   if (const std::size_t i = first_bad; i < n)
     throw py::value_error("domain point " + std::to_string(i) + " (" + std::to_string(xs[i].x) +
                           ", " + std::to_string(xs[i].y) + ") is not in the patch's domain");
-  py::array_t<double> jets({py::ssize_t(n), py::ssize_t(18)});
-  py::array_t<uint8_t> geometry({py::ssize_t(n), py::ssize_t(sizeof(SurfaceGeometry))});
-  const std::span<SurfaceJet> jet(reinterpret_cast<SurfaceJet*>(jets.mutable_data()), n);
-  const std::span<SurfaceGeometry> geo(reinterpret_cast<SurfaceGeometry*>(geometry.mutable_data()),
-                                       n);
+  // New arrays, or the buffers of an earlier result (filled again: no allocation, no page faults).
+  py::array jets = out ? out_buffer(*out, "positions", py::dtype::of<double>(), n, 18)
+                       : py::array_t<double>({py::ssize_t(n), py::ssize_t(18)});
+  py::array geometry =
+      out ? out_buffer(*out, "normals", py::dtype::of<uint8_t>(), n, sizeof(SurfaceGeometry))
+          : py::array_t<uint8_t>({py::ssize_t(n), py::ssize_t(sizeof(SurfaceGeometry))});
+  const std::span<SurfaceJet> jet(static_cast<SurfaceJet*>(jets.mutable_data()), n);
+  const std::span<SurfaceGeometry> geo(static_cast<SurfaceGeometry*>(geometry.mutable_data()), n);
   {
     py::gil_scoped_release release;
     parallel_chunks(n, s.evaluator->grains().evaluate, [&](std::size_t first, std::size_t last) {
@@ -93,7 +122,7 @@ py::dict evaluate_points(const PySamples& s,
   const auto jet_columns = [&](int first) {
     return py::array(py::dtype::of<double>(), {py::ssize_t(n), py::ssize_t(3)},
                      {py::ssize_t(sizeof(SurfaceJet)), py::ssize_t(sizeof(double))},
-                     jets.data() + first, jets);
+                     static_cast<const double*>(jets.data()) + first, jets);
   };
   const SurfaceGeometry* g = geo.data();
   const auto field = [&](const void* first, py::dtype type, std::vector<py::ssize_t> shape,
@@ -103,21 +132,22 @@ py::dict evaluate_points(const PySamples& s,
   const py::ssize_t rec = sizeof(SurfaceGeometry), N = static_cast<py::ssize_t>(n);
   static const SurfaceGeometry none{};
   const SurfaceGeometry* g0 = n ? g : &none;
-  py::dict out;
-  out["positions"] = jet_columns(0);
-  out["su"] = jet_columns(3);
-  out["sv"] = jet_columns(6);
-  out["suu"] = jet_columns(9);
-  out["suv"] = jet_columns(12);
-  out["svv"] = jet_columns(15);
-  out["normals"] = field(&g0->normal.x, py::dtype::of<double>(), {N, 3}, {rec, 8});
-  out["mean_curvature"] = field(&g0->mean, py::dtype::of<double>(), {N}, {rec});
-  out["gaussian_curvature"] = field(&g0->gaussian, py::dtype::of<double>(), {N}, {rec});
-  out["k_min"] = field(&g0->kmin, py::dtype::of<double>(), {N}, {rec});
-  out["k_max"] = field(&g0->kmax, py::dtype::of<double>(), {N}, {rec});
+  if (out) return *out;  // its views see the buffers just filled
+  py::dict result;
+  result["positions"] = jet_columns(0);
+  result["su"] = jet_columns(3);
+  result["sv"] = jet_columns(6);
+  result["suu"] = jet_columns(9);
+  result["suv"] = jet_columns(12);
+  result["svv"] = jet_columns(15);
+  result["normals"] = field(&g0->normal.x, py::dtype::of<double>(), {N, 3}, {rec, 8});
+  result["mean_curvature"] = field(&g0->mean, py::dtype::of<double>(), {N}, {rec});
+  result["gaussian_curvature"] = field(&g0->gaussian, py::dtype::of<double>(), {N}, {rec});
+  result["k_min"] = field(&g0->kmin, py::dtype::of<double>(), {N}, {rec});
+  result["k_max"] = field(&g0->kmax, py::dtype::of<double>(), {N}, {rec});
   static_assert(sizeof(GeometryStatus) == 1 && uint8_t(GeometryStatus::Regular) == 0);
-  out["singular"] = field(&g0->status, py::dtype::of<bool>(), {N}, {rec});
-  return out;
+  result["singular"] = field(&g0->status, py::dtype::of<bool>(), {N}, {rec});
+  return result;
 }
 
 }  // namespace pl::python

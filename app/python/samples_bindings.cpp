@@ -144,11 +144,13 @@ void bind_samples(py::module_& m) {
           },
           "K x 3 copy of the control points of the surface's patch (for a network face: its "
           "Gregory or GB patch, derived from the network).")
-      .def("evaluate_at", &evaluate_points, py::arg("uv"),
+      .def("evaluate_at", &evaluate_points, py::arg("uv"), py::arg("out") = py::none(),
            "The patch of these samples (moved points included) at the N x 2 domain points uv: "
            "a dict of arrays positions, su, sv, suu, suv, svv, normals (N x 3), mean_curvature, "
            "gaussian_curvature, k_min, k_max and singular (N). Where Su x Sv vanishes "
-           "(singular), normal and curvatures are 0. ValueError for a point outside the domain.")
+           "(singular), normal and curvatures are 0. ValueError for a point outside the domain. "
+           "out: a dict an earlier call returned for as many points, filled again and returned "
+           "(no new arrays).")
       .def(
           "move_control_point",
           [](PySamples& s, std::size_t k, const py::handle& p) {

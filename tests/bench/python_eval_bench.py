@@ -11,6 +11,8 @@ the machine may be shared). Prints "figure NAME VALUE UNIT" lines:
   python_eval_at_msamples_per_s   PatchSamples.evaluate_at of the same 1,000,141 domain points
                                (new output arrays, filled in parallel; no tessellation)
   python_eval_at_over_cpp      that over evaluate_all, timed alternately again (_2)
+  python_eval_into_over_cpp    evaluate_at(uv, out=earlier result): the same points into the
+                               arrays of an earlier call, over evaluate_all (_3)
   python_move_ms               PatchSamples.move_control_point of inner point P^1_{2,1} at
                                100,501 samples, from Python, the changed samples returned
   cpp_drag_ms                  PatchEvaluator::move_control_point of the same point, timed in C++
@@ -77,6 +79,17 @@ def evaluation(scene, density, repeats):
     figure("python_eval_at_msamples_per_s", at_rate, "Msamples/s")
     figure("cpp_eval_msamples_per_s_2", cpp_rate, "Msamples/s")
     figure("python_eval_at_over_cpp", at_rate / cpp_rate, "x")
+    # evaluate_at into the arrays of an earlier result (out=): no allocation, as evaluate_all.
+    result = samples.evaluate_at(uv)
+    into, cpp = [], []
+    for _ in range(repeats):
+        into.append(time_ms(lambda: samples.evaluate_at(uv, out=result)))
+        cpp += _timing.evaluate_all_ms(samples, 1)
+    into_rate = n / (statistics.median(into) * 1e3)
+    cpp_rate = n / (statistics.median(cpp) * 1e3)
+    figure("python_eval_into_msamples_per_s", into_rate, "Msamples/s")
+    figure("cpp_eval_msamples_per_s_3", cpp_rate, "Msamples/s")
+    figure("python_eval_into_over_cpp", into_rate / cpp_rate, "x")
     return py_rate
 
 

@@ -173,3 +173,22 @@ def test_evaluate_at_takes_points_of_the_domain_only():
             s.evaluate_at(bad)
     with pytest.raises((ValueError, TypeError)):
         s.evaluate_at("points")
+
+
+def test_evaluate_at_fills_an_earlier_result_again():
+    (s,) = patchlab.load(SOURCE / "tests" / "data" / "gb" / "cagd86.gbp").evaluate(density=6)
+    uv = np.array(s.params)
+    result = s.evaluate_at(uv)
+    first = {k: np.array(v) for k, v in result.items()}
+    s.move_control_point(0, s.control_points[0] + (0, 0, 0.5))
+    again = s.evaluate_at(uv, out=result)
+    assert again is result
+    fresh = s.evaluate_at(uv)
+    for k in result:
+        assert np.array_equal(result[k], fresh[k]), k
+    assert not np.array_equal(result["positions"], first["positions"])
+    # Anything but an earlier result for as many points is refused.
+    for out in ({}, s.evaluate_at(uv[:5]), {"positions": s.positions, "normals": s.normals},
+                {k: np.array(v) for k, v in fresh.items()}):
+        with pytest.raises(ValueError):
+            s.evaluate_at(uv, out=out)
