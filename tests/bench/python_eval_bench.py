@@ -55,41 +55,35 @@ def time_ms(f):
     return (time.perf_counter() - a) * 1e3
 
 
-def evaluation(scene, density, repeats):
-    samples = scene.evaluate(density=density)[0]  # the tessellation is kept by the scene
-    n = len(samples)
+def against_evaluate_all(name, f, samples, repeats, cpp_name):
+    """Msamples/s of f from Python and of evaluate_all in C++, timed alternately (both sides see
+    the same background load); prints both and their ratio NAME_over_cpp."""
     python, cpp = [], []
-    for _ in range(repeats):  # alternating: both sides see the same background load
-        python.append(time_ms(lambda: scene.evaluate(density=density)))
+    for _ in range(repeats):
+        python.append(time_ms(f))
         cpp += _timing.evaluate_all_ms(samples, 1)
+    n = len(samples)
     py_rate = n / (statistics.median(python) * 1e3)
     cpp_rate = n / (statistics.median(cpp) * 1e3)
-    figure("python_eval_samples", n, "samples")
-    figure("python_eval_msamples_per_s", py_rate, "Msamples/s")
-    figure("cpp_eval_msamples_per_s", cpp_rate, "Msamples/s")
-    figure("python_eval_over_cpp", py_rate / cpp_rate, "x")
+    figure(f"{name}_msamples_per_s", py_rate, "Msamples/s")
+    figure(cpp_name, cpp_rate, "Msamples/s")
+    figure(f"{name}_over_cpp", py_rate / cpp_rate, "x")
+    return py_rate
+
+
+def evaluation(scene, density, repeats):
+    samples = scene.evaluate(density=density)[0]  # the tessellation is kept by the scene
+    figure("python_eval_samples", len(samples), "samples")
+    py_rate = against_evaluate_all("python_eval", lambda: scene.evaluate(density=density),
+                                   samples, repeats, "cpp_eval_msamples_per_s")
     # The same 1e6 domain points through PatchSamples.evaluate_at: new arrays, no tessellation.
     uv = np.array(samples.params)
-    at, cpp = [], []
-    for _ in range(repeats):
-        at.append(time_ms(lambda: samples.evaluate_at(uv)))
-        cpp += _timing.evaluate_all_ms(samples, 1)
-    at_rate = n / (statistics.median(at) * 1e3)
-    cpp_rate = n / (statistics.median(cpp) * 1e3)
-    figure("python_eval_at_msamples_per_s", at_rate, "Msamples/s")
-    figure("cpp_eval_msamples_per_s_2", cpp_rate, "Msamples/s")
-    figure("python_eval_at_over_cpp", at_rate / cpp_rate, "x")
+    against_evaluate_all("python_eval_at", lambda: samples.evaluate_at(uv), samples, repeats,
+                         "cpp_eval_msamples_per_s_2")
     # evaluate_at into the arrays of an earlier result (out=): no allocation, as evaluate_all.
     result = samples.evaluate_at(uv)
-    into, cpp = [], []
-    for _ in range(repeats):
-        into.append(time_ms(lambda: samples.evaluate_at(uv, out=result)))
-        cpp += _timing.evaluate_all_ms(samples, 1)
-    into_rate = n / (statistics.median(into) * 1e3)
-    cpp_rate = n / (statistics.median(cpp) * 1e3)
-    figure("python_eval_into_msamples_per_s", into_rate, "Msamples/s")
-    figure("cpp_eval_msamples_per_s_3", cpp_rate, "Msamples/s")
-    figure("python_eval_into_over_cpp", into_rate / cpp_rate, "x")
+    against_evaluate_all("python_eval_into", lambda: samples.evaluate_at(uv, out=result),
+                         samples, repeats, "cpp_eval_msamples_per_s_3")
     return py_rate
 
 
