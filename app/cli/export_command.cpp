@@ -6,6 +6,7 @@
 #include "app/cli/commands.hpp"
 #include "app/cli/load_input.hpp"
 #include "app/cli/progress_line.hpp"
+#include "app/cli/scene_outputs.hpp"
 #include "app/cli/work_limits.hpp"
 #include "core/analysis/curve_analysis.hpp"
 #include "core/cad/cad_export.hpp"
@@ -40,6 +41,34 @@ int export_cad_file(const Arguments& a, const std::string& target, std::ostream&
 
 }  // namespace
 
+MeshExportCount export_mesh_file(const Scene& scene, const std::filesystem::path& target,
+                                 int density, std::optional<FaceScheme> scheme,
+                                 const std::string& source) {
+  mesh_format_for(target);  // reject an unknown format before any work
+  check_work_limits(scene, density, source);
+  TessellationCache cache;
+  ProgressLine::set_stage("evaluating the surfaces");
+  const SceneSurfaces surfaces = evaluate_scene(scene, density, scheme, cache, source);
+  std::vector<SurfaceMesh> meshes;
+  for (const SceneSurface& s : surfaces.surfaces)
+    meshes.push_back(make_surface_mesh(*s.evaluator, s.name));
+  for (std::size_t i = 0; i < scene.curves.size(); ++i)
+    check_curve_finite(scene.curves[i], i, density, source);
+  std::vector<CurvePolyline> polylines;
+  if (mesh_format_for(target) == MeshFormat::Obj)
+    for (std::size_t i = 0; i < scene.curves.size(); ++i)
+      polylines.push_back(curve_polyline(scene.curves[i], curve_name(scene.curves[i], i), density));
+  ProgressLine::set_stage("writing " + target.string());
+  export_meshes(meshes, target, source, polylines);
+  return {meshes.size(), polylines.size()};
+}
+
+std::string mesh_export_summary(const MeshExportCount& n, const std::string& target) {
+  std::string s = "wrote " + std::to_string(n.patches) + " patch(es)";
+  if (n.curves > 0) s += " and " + std::to_string(n.curves) + " curve(s)";
+  return s + " to " + target + "\n";
+}
+
 int run_export(std::span<const std::string> args, std::ostream& out, std::ostream&) {
   const Arguments a(args, {"-o", "--density", "--scheme", "--tolerance"}, {});
   if (a.positional().size() != 1) throw UsageError("export takes exactly one input FILE");
@@ -49,28 +78,12 @@ int run_export(std::span<const std::string> args, std::ostream& out, std::ostrea
   if (a.value("--tolerance")) throw UsageError("--tolerance applies to STEP and IGES output only");
   const int density = a.integer("--density", 32, 1, kMaxDensity);
   const auto scheme = parse_scheme_option(a.value("--scheme"));
-  mesh_format_for(*target);  // reject an unknown format before any work
+  mesh_format_for(*target);  // reject an unknown format before reading
   const std::string file = a.positional()[0];
   ProgressLine::set_stage("reading " + file);
   const Scene scene = load_input(file);
-  check_work_limits(scene, density, file);
-  TessellationCache cache;
-  ProgressLine::set_stage("evaluating the surfaces");
-  const SceneSurfaces surfaces = evaluate_scene(scene, density, scheme, cache, file);
-  std::vector<SurfaceMesh> meshes;
-  for (const SceneSurface& s : surfaces.surfaces)
-    meshes.push_back(make_surface_mesh(*s.evaluator, s.name));
-  for (std::size_t i = 0; i < scene.curves.size(); ++i)
-    check_curve_finite(scene.curves[i], i, density, file);
-  std::vector<CurvePolyline> polylines;
-  if (mesh_format_for(*target) == MeshFormat::Obj)
-    for (std::size_t i = 0; i < scene.curves.size(); ++i)
-      polylines.push_back(curve_polyline(scene.curves[i], curve_name(scene.curves[i], i), density));
-  ProgressLine::set_stage("writing " + *target);
-  export_meshes(meshes, *target, file, polylines);
-  out << "wrote " << meshes.size() << " patch(es)";
-  if (!polylines.empty()) out << " and " << polylines.size() << " curve(s)";
-  out << " to " << *target << "\n";
+  const MeshExportCount n = export_mesh_file(scene, *target, density, scheme, file);
+  out << mesh_export_summary(n, *target);
   return kExitOk;
 }
 

@@ -2,6 +2,7 @@
 // offscreen context, so it works with no X server and DISPLAY unset.
 #include <charconv>
 #include <cmath>
+#include <tuple>
 
 #include "app/cli/arguments.hpp"
 #include "app/cli/camera_file.hpp"
@@ -10,6 +11,7 @@
 #include "app/cli/draw_scene_builder.hpp"
 #include "app/cli/load_input.hpp"
 #include "app/cli/progress_line.hpp"
+#include "app/cli/scene_outputs.hpp"
 #include "app/cli/work_limits.hpp"
 #include "core/analysis/compared_schemes.hpp"
 #include "core/analysis/curve_analysis.hpp"
@@ -25,8 +27,6 @@ namespace pl {
 
 namespace {
 
-constexpr int kMaxSide = 4096;
-
 std::pair<int, int> parse_size(const std::optional<std::string>& v) {
   if (!v) return {1600, 1200};
   const std::size_t x = v->find('x');
@@ -36,7 +36,7 @@ std::pair<int, int> parse_size(const std::optional<std::string>& v) {
     return ec == std::errc() && end == s.data() + s.size() && !s.empty();
   };
   if (x == std::string::npos || !whole(v->substr(0, x), w) || !whole(v->substr(x + 1), h) ||
-      w < 1 || h < 1 || w > kMaxSide || h > kMaxSide)
+      w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide)
     throw UsageError("--size takes WxH with each side from 1 to 4096, got \"" + *v + "\"");
   return {w, h};
 }
@@ -84,51 +84,30 @@ DisplaySettings parse_settings(const Arguments& a) {
 
 }  // namespace
 
-int run_render(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
-  const Arguments a(
-      args, {"-o", "--size", "--mode", "--view", "--density", "--scheme", "--range", "--schemes"},
-      {"--compare", "--transparent", "--flat"});
-  if (a.positional().size() != 1) throw UsageError("render takes exactly one input FILE");
-  const auto target = a.value("-o");
-  if (!target || !ends_with_png(*target)) throw UsageError("render needs -o OUT.png");
-  const auto [width, height] = parse_size(a.value("--size"));
-  const int density = a.integer("--density", 32, 1, kMaxDensity);
-  const auto scheme = parse_scheme_option(a.value("--scheme"));
-  const bool compare = a.flag("--compare");
-  if (compare && scheme) throw UsageError("--compare renders both schemes; drop --scheme");
-  // --compare --schemes S,S,...: one panel per scheme (default: Gregory and GB).
-  std::vector<FaceScheme> compared{FaceScheme::Gregory, FaceScheme::GB};
-  if (const auto list = a.value("--schemes")) {
-    if (!compare) throw UsageError("--schemes goes with --compare");
-    compared = parse_scheme_list(*list, "--schemes");
-  }
-  const DisplaySettings settings = parse_settings(a);
-  // No --view: the default view (render/default_view.hpp), which faces a single patch's front.
-  const std::optional<std::string> view = a.value("--view");
-  const auto preset = view ? parse_view_preset(*view) : std::nullopt;
-
-  const std::string file = a.positional()[0];
-  const Scene scene = load_input(file);
-  check_work_limits(scene, density, file);
-  if (compare && !scene.network)
+RenderedImage render_scene_image(const Scene& scene, const RenderJob& job,
+                                 const std::string& file) {
+  const DisplaySettings& settings = job.settings;
+  const auto preset = job.view ? parse_view_preset(*job.view) : std::nullopt;
+  check_work_limits(scene, job.density, file);
+  if (job.compare && !scene.network)
     throw DataError(file, "", "--compare needs a scene with a curve network");
   for (std::size_t i = 0; i < scene.curves.size(); ++i)
-    check_curve_finite(scene.curves[i], i, density, file);
+    check_curve_finite(scene.curves[i], i, job.density, file);
   TessellationCache cache;
   ProgressLine::set_stage("evaluating the surfaces");
   // No comb work unless combs are drawn.
   const int teeth = settings.combs ? settings.comb_teeth : 0;
   std::vector<DrawScene> draws;
   std::vector<std::string> labels;
-  if (compare) {
-    for (FaceScheme s : compared) {
-      const SceneSurfaces surfaces = evaluate_scene(scene, density, s, cache, file);
+  if (job.compare) {
+    for (FaceScheme s : job.compared) {
+      const SceneSurfaces surfaces = evaluate_scene(scene, job.density, s, cache, file);
       draws.push_back(build_draw_scene(scene, surfaces, teeth));
       labels.push_back(s == FaceScheme::GB ? "Generalized Bézier" : scheme_title(s));
     }
   } else {
-    draws.push_back(
-        build_draw_scene(scene, evaluate_scene(scene, density, scheme, cache, file), teeth));
+    draws.push_back(build_draw_scene(
+        scene, evaluate_scene(scene, job.density, job.scheme, cache, file), teeth));
     labels.emplace_back();
   }
 
@@ -152,8 +131,8 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
     scenes.push_back(&d);
   }
   FrameRequest request;
-  request.width = width;
-  request.height = height;
+  request.width = job.width;
+  request.height = job.height;
   request.settings = settings;
   // One range for every panel, so equal colours mean equal curvature across the comparison.
   request.range = settings.range
@@ -167,20 +146,49 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
   }
   request.key_entries = key;
   const double aspect = panel_aspect(request);
-  request.camera = !view    ? default_camera(scenes, aspect, &settings)
-                   : preset ? preset_camera(*preset, box, aspect)
-                            : read_camera_file(*view, box, aspect);
+  request.camera = !job.view ? default_camera(scenes, aspect, &settings)
+                   : preset  ? preset_camera(*preset, box, aspect)
+                             : read_camera_file(*job.view, box, aspect);
 
+  EglContext context;
+  SceneRenderer renderer;
+  std::vector<GpuScene> gpu;
+  gpu.reserve(draws.size());
+  for (const DrawScene& d : draws) gpu.emplace_back(d);
+  for (std::size_t i = 0; i < gpu.size(); ++i) request.panels[i].scene = &gpu[i];
+  ProgressLine::set_stage("drawing the image");
+  return {render_frame(renderer, request), meshes.size()};
+}
+
+int run_render(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
+  const Arguments a(
+      args, {"-o", "--size", "--mode", "--view", "--density", "--scheme", "--range", "--schemes"},
+      {"--compare", "--transparent", "--flat"});
+  if (a.positional().size() != 1) throw UsageError("render takes exactly one input FILE");
+  const auto target = a.value("-o");
+  if (!target || !ends_with_png(*target)) throw UsageError("render needs -o OUT.png");
+  RenderJob job;
+  std::tie(job.width, job.height) = parse_size(a.value("--size"));
+  job.density = a.integer("--density", 32, 1, kMaxDensity);
+  job.scheme = parse_scheme_option(a.value("--scheme"));
+  job.compare = a.flag("--compare");
+  if (job.compare && job.scheme) throw UsageError("--compare renders both schemes; drop --scheme");
+  // --compare --schemes S,S,...: one panel per scheme (default: Gregory and GB).
+  if (const auto list = a.value("--schemes")) {
+    if (!job.compare) throw UsageError("--schemes goes with --compare");
+    job.compared = parse_scheme_list(*list, "--schemes");
+  }
+  job.settings = parse_settings(a);
+  // No --view: the default view (render/default_view.hpp), which faces a single patch's front.
+  job.view = a.value("--view");
+
+  const std::string file = a.positional()[0];
+  const Scene scene = load_input(file);
+  std::size_t patches = 0;
   try {
-    EglContext context;
-    SceneRenderer renderer;
-    std::vector<GpuScene> gpu;
-    gpu.reserve(draws.size());
-    for (const DrawScene& d : draws) gpu.emplace_back(d);
-    for (std::size_t i = 0; i < gpu.size(); ++i) request.panels[i].scene = &gpu[i];
-    ProgressLine::set_stage("drawing the image");
-    const Image image = render_frame(renderer, request);
-    write_file_atomically(*target, encode_png(image));
+    const RenderedImage r = render_scene_image(scene, job, file);
+    patches = r.patches;
+    write_file_atomically(*target, encode_png(r.image));
   } catch (const GlContextError& e) {
     err << "patchlab: cannot render " << file << ": " << e.what() << "\n";
     return kExitBadInput;
@@ -190,7 +198,7 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
     err << "patchlab: cannot render " << file << ": " << e.what() << "\n";
     return kExitBadInput;
   }
-  out << "wrote " << width << "x" << height << " image of " << meshes.size() << " patch(es) to "
+  out << "wrote " << job.width << "x" << job.height << " image of " << patches << " patch(es) to "
       << *target << "\n";
   return kExitOk;
 }

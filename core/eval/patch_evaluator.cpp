@@ -239,6 +239,13 @@ std::size_t PatchEvaluator::move_control_point(std::size_t k, const Vec3& p) {
   return static_cast<std::size_t>(n);
 }
 
+PatchEvaluator::Support PatchEvaluator::influence_support(std::size_t k) {
+  if (storage_ == SampleStorage::Compact) return {};
+  const Column& c = column(k);
+  if (c.dense) return {};
+  return {false, std::span<const uint32_t>(c.index)};
+}
+
 std::size_t PatchEvaluator::max_columns() const {
   const std::size_t column_bytes = std::max<std::size_t>(1, jets_.size() * sizeof(Jet));
   return std::max(kMaxColumns, column_budget_ / column_bytes);

@@ -61,6 +61,15 @@ class PatchEvaluator {
   // Moves control point k to p, updating only the samples it influences. Returns their count.
   std::size_t move_control_point(std::size_t k, const Vec3& p);
 
+  // The samples move_control_point(k, ...) updates: every sample (`all`: a dense column, or
+  // Compact storage, which evaluates again), or the listed ones (the support of phi_k). Builds k's
+  // column if it is missing; the span is valid until the next move or evaluation.
+  struct Support {
+    bool all = true;
+    std::span<const uint32_t> samples;
+  };
+  Support influence_support(std::size_t k);
+
   // Moves several control points at once (a network edit moves a face's vertex, handles and
   // derived ribbon points together): every point's weight is added, then each touched sample's
   // geometry is recomputed once. Falls back to a full re-evaluation when the points are more than

@@ -8,6 +8,7 @@
 
 #include "core/domain/unit_square.hpp"
 #include "core/patch/bezier_patch.hpp"
+#include "core/patch/bspline_patch.hpp"
 #include "test_util.hpp"
 
 namespace pl {
@@ -194,6 +195,32 @@ TEST(PatchEvaluator, CompactStorageKeepsTheSamePositionsAndGeometry) {
   for (std::size_t i = 0; i < compact.sample_count(); ++i) bad += !compact.finite(i);
   EXPECT_GT(bad, 0u);
   same();
+}
+
+// influence_support lists exactly the samples where the point's basis function is non-zero (an
+// independent evaluation of phi_k), or says `all` for a column covering every sample.
+TEST(PatchEvaluator, InfluenceSupportIsWherePhiIsNonZero) {
+  // Cubic B-spline, 7 x 7 points: the basis of P_00 lives on one knot span of four in each
+  // direction, that of P_11 on two.
+  const std::vector<double> knots = {0, 0, 0, 0, 0.25, 0.5, 0.75, 1, 1, 1, 1};
+  auto spline =
+      std::make_shared<BSplinePatch>(3, 3, knots, knots, 7, 7, test::random_points(49, 8));
+  auto tess = std::make_shared<const Tessellation>(UnitSquareDomain().tessellate(24));
+  PatchEvaluator ev(spline, tess);
+  for (std::size_t k : {std::size_t(0), std::size_t(8)}) {  // P_00 and P_11
+    std::vector<Jet> phi(tess->points.size());
+    spline->influence(k, tess->points, phi);
+    std::vector<uint32_t> nonzero;
+    for (std::size_t i = 0; i < phi.size(); ++i)
+      if (!phi[i].is_zero()) nonzero.push_back(static_cast<uint32_t>(i));
+    const PatchEvaluator::Support support = ev.influence_support(k);
+    ASSERT_FALSE(support.all) << k;  // local support: less than half the samples
+    EXPECT_EQ(std::vector<uint32_t>(support.samples.begin(), support.samples.end()), nonzero) << k;
+  }
+  // A Bernstein point moves every sample.
+  auto bezier = std::make_shared<BezierPatch>(3, 3, test::random_points(16, 3));
+  PatchEvaluator dense(bezier, tess);
+  EXPECT_TRUE(dense.influence_support(5).all);
 }
 
 }  // namespace
