@@ -7,7 +7,9 @@
 #include "app/cli/arguments.hpp"
 #include "app/cli/commands.hpp"
 #include "app/cli/progress_line.hpp"
+#include "app/cli/stop_signals.hpp"
 #include "core/base/data_error.hpp"
+#include "core/io/json_node.hpp"
 
 namespace pl {
 
@@ -47,7 +49,8 @@ void print_help(std::ostream& os) {
         "docs/gbp-format.md); the commands and their output: docs/cli.md.\n"
         "  --density N   samples per boundary curve (default 32)\n"
         "  --scheme S    fill network faces with gregory (3- and 4-sided faces) or gb\n"
-        "Exit status: 0 success, 1 bad input (message names file and place), 2 wrong usage.\n";
+        "Exit status: 0 success, 1 bad input (message names file and place), 2 wrong usage\n"
+        "(what the command line alone shows: options, values, file name extensions).\n";
 }
 
 }  // namespace
@@ -56,6 +59,8 @@ int run_cli(std::span<const std::string> args, std::ostream& out, std::ostream& 
   // Past a file size limit (ulimit -f) a write then fails with EFBIG, which is reported with the
   // target's name, instead of SIGXFSZ killing the process mid-write.
   std::signal(SIGXFSZ, SIG_IGN);
+  // Stopped by SIGTERM or SIGINT, a command removes its temporary file as it does on an error.
+  remove_temporaries_on_stop_signals();
   if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
     print_help(out);
     return kExitOk;
@@ -77,11 +82,13 @@ int run_cli(std::span<const std::string> args, std::ostream& out, std::ostream& 
       }
     throw UsageError("unknown command \"" + args[0] + "\"");
   } catch (const UsageError& e) {
-    err << "patchlab: " << e.what() << "\n";
+    // Every message is one line: file names and quoted arguments with control characters (a
+    // newline in a file name) are printed escaped.
+    err << "patchlab: " << printable(e.what()) << "\n";
     print_usage(err);
     return kExitUsage;
   } catch (const DataError& e) {
-    err << "patchlab: " << e.what() << "\n";
+    err << "patchlab: " << printable(e.what()) << "\n";
     return kExitBadInput;
   } catch (const std::bad_alloc&) {
     err << "patchlab: out of memory (try a smaller --density)\n";

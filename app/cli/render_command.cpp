@@ -5,6 +5,7 @@
 
 #include "app/cli/arguments.hpp"
 #include "app/cli/camera_file.hpp"
+#include "app/cli/checked_scene.hpp"
 #include "app/cli/cli.hpp"
 #include "app/cli/commands.hpp"
 #include "app/cli/draw_scene_builder.hpp"
@@ -15,6 +16,7 @@
 #include "core/base/data_error.hpp"
 #include "core/io/atomic_file.hpp"
 #include "core/io/input_limits.hpp"
+#include "core/io/json_node.hpp"
 #include "core/mesh/finite_check.hpp"
 #include "render/default_view.hpp"
 #include "render/egl_context.hpp"
@@ -88,9 +90,12 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
                     {"--compare", "--transparent", "--flat"});
   if (a.positional().size() != 1) throw UsageError("render takes exactly one input FILE");
   const auto target = a.value("-o");
-  if (!target || !ends_with_png(*target)) throw UsageError("render needs -o OUT.png");
+  if (!target) throw UsageError("render needs -o OUT.png");
+  if (!ends_with_png(*target))
+    throw UsageError("render writes .png, not \"" +
+                     std::filesystem::path(*target).extension().string() + "\"");
   const auto [width, height] = parse_size(a.value("--size"));
-  const int density = a.integer("--density", 32, 1, kMaxDensity);
+  const int density = a.integer("--density", kDefaultDensity, 1, kMaxDensity);
   const auto scheme = parse_scheme_option(a.value("--scheme"));
   const bool compare = a.flag("--compare");
   if (compare && scheme) throw UsageError("--compare renders both schemes; drop --scheme");
@@ -98,16 +103,20 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
   // No --view: the default view (render/default_view.hpp), which faces a single patch's front.
   const std::optional<std::string> view = a.value("--view");
   const auto preset = view ? parse_view_preset(*view) : std::nullopt;
+  // Anything else must name a camera file: a word that is neither is a mistyped preset.
+  if (view && !preset && std::filesystem::path(*view).extension() != ".json")
+    throw UsageError(
+        "--view takes iso, front, back, left, right, top, bottom or a camera "
+        "file NAME.json, got \"" +
+        *view + "\"");
 
   const std::string file = a.positional()[0];
+  check_input_name(file);
+  ProgressLine::set_stage("reading " + printable(file));
   const Scene scene = load_input(file);
-  check_work_limits(scene, density, file);
   if (compare && !scene.network)
     throw DataError(file, "", "--compare needs a scene with a curve network");
-  for (std::size_t i = 0; i < scene.curves.size(); ++i)
-    check_curve_finite(scene.curves[i], i, density, file);
   TessellationCache cache;
-  ProgressLine::set_stage("evaluating the surfaces");
   // No comb work unless combs are drawn.
   const int teeth = settings.combs ? settings.comb_teeth : 0;
   std::vector<DrawScene> draws;
@@ -115,13 +124,15 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
   if (compare) {
     for (const auto& [s, label] : {std::pair{FaceScheme::Gregory, "Gregory"},
                                    std::pair{FaceScheme::GB, "Generalized Bézier"}}) {
-      const SceneSurfaces surfaces = evaluate_scene(scene, density, s, cache, file);
+      const SceneSurfaces surfaces = evaluate_checked(scene, density, s, cache, file);
+      ProgressLine::set_stage("preparing the drawing");
       draws.push_back(build_draw_scene(scene, surfaces, teeth));
       labels.push_back(label);
     }
   } else {
-    draws.push_back(
-        build_draw_scene(scene, evaluate_scene(scene, density, scheme, cache, file), teeth));
+    const SceneSurfaces surfaces = evaluate_checked(scene, density, scheme, cache, file);
+    ProgressLine::set_stage("preparing the drawing");
+    draws.push_back(build_draw_scene(scene, surfaces, teeth));
     labels.emplace_back();
   }
 
@@ -175,16 +186,16 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
     const Image image = render_frame(renderer, request);
     write_file_atomically(*target, encode_png(image));
   } catch (const GlContextError& e) {
-    err << "patchlab: cannot render " << file << ": " << e.what() << "\n";
+    err << "patchlab: cannot render " << printable(file) << ": " << printable(e.what()) << "\n";
     return kExitBadInput;
   } catch (const DataError&) {
     throw;
   } catch (const std::runtime_error& e) {
-    err << "patchlab: cannot render " << file << ": " << e.what() << "\n";
+    err << "patchlab: cannot render " << printable(file) << ": " << printable(e.what()) << "\n";
     return kExitBadInput;
   }
   out << "wrote " << width << "x" << height << " image of " << meshes.size() << " patch(es) to "
-      << *target << "\n";
+      << printable(*target) << "\n";
   return kExitOk;
 }
 

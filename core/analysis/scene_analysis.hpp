@@ -46,6 +46,10 @@ struct SceneReport {
 // curve_samples: samples per span of each free curve (the CLI's --density).
 SceneReport analyze_scene(const Scene& scene, const SceneSurfaces& surfaces,
                           int curve_samples = 32);
+// The same with the reports of the scene's curves already made (checked_curve_report), one per
+// curve in order.
+SceneReport analyze_scene(const Scene& scene, const SceneSurfaces& surfaces,
+                          std::vector<CurveReport> curves);
 
 // Angle between two unit vectors in degrees, accurate for tiny angles (atan2 form).
 double angle_deg(const Vec3& a, const Vec3& b);
