@@ -7,7 +7,9 @@
 #include "app/cli/arguments.hpp"
 #include "app/cli/commands.hpp"
 #include "app/cli/progress_line.hpp"
+#include "app/cli/stop_signals.hpp"
 #include "core/base/data_error.hpp"
+#include "core/io/json_node.hpp"
 
 namespace pl {
 
@@ -51,7 +53,8 @@ void print_help(std::ostream& os) {
         "  --scheme S    fill network faces with S: gregory (3- and 4-sided faces), gb,\n"
         "                side-based, corner-based, generalized-coons, composite-ribbon,\n"
         "                midpoint or midpoint-coons (these six: convex faces)\n"
-        "Exit status: 0 success, 1 bad input (message names file and place), 2 wrong usage.\n";
+        "Exit status: 0 success, 1 bad input (message names file and place), 2 wrong usage\n"
+        "(what the command line alone shows: options, values, file name extensions).\n";
 }
 
 }  // namespace
@@ -60,6 +63,8 @@ int run_cli(std::span<const std::string> args, std::ostream& out, std::ostream& 
   // Past a file size limit (ulimit -f) a write then fails with EFBIG, which is reported with the
   // target's name, instead of SIGXFSZ killing the process mid-write.
   std::signal(SIGXFSZ, SIG_IGN);
+  // Stopped by SIGTERM or SIGINT, a command removes its temporary file as it does on an error.
+  remove_temporaries_on_stop_signals();
   if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
     print_help(out);
     return kExitOk;
@@ -81,11 +86,13 @@ int run_cli(std::span<const std::string> args, std::ostream& out, std::ostream& 
       }
     throw UsageError("unknown command \"" + args[0] + "\"");
   } catch (const UsageError& e) {
-    err << "patchlab: " << e.what() << "\n";
+    // Every message is one line: file names and quoted arguments with control characters (a
+    // newline in a file name) are printed escaped.
+    err << "patchlab: " << printable(e.what()) << "\n";
     print_usage(err);
     return kExitUsage;
   } catch (const DataError& e) {
-    err << "patchlab: " << e.what() << "\n";
+    err << "patchlab: " << printable(e.what()) << "\n";
     return kExitBadInput;
   } catch (const std::bad_alloc&) {
     err << "patchlab: out of memory (try a smaller --density)\n";

@@ -7,6 +7,7 @@
 #include "app/document/scene_file.hpp"
 #include "core/base/data_error.hpp"
 #include "core/io/gbp_io.hpp"
+#include "core/io/json_node.hpp"
 #include "core/io/scene_io.hpp"
 #include "core/patch/gb/gb_patch.hpp"
 
@@ -21,12 +22,13 @@ int run_convert(std::span<const std::string> args, std::ostream& out, std::ostre
   if (ext != ".gbp" && ext != ".json")
     throw UsageError("convert writes .gbp or .json, not \"" + ext + "\"");
   const std::string file = a.positional()[0];
+  check_input_name(file);
   const Scene scene = load_input(file);
   if (ext == ".gbp")
     write_gbp(*target, single_gb_patch(scene, file));
   else
     write_scene(*target, scene);
-  out << "wrote " << *target << "\n";
+  out << "wrote " << printable(*target) << "\n";
   return kExitOk;
 }
 

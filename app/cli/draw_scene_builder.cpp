@@ -1,8 +1,10 @@
 #include "app/cli/draw_scene_builder.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
+#include "core/analysis/curve_analysis.hpp"
 #include "core/patch/control_net_topology.hpp"
 #include "core/patch/side_curve.hpp"
 
@@ -86,10 +88,39 @@ int free_curve_samples_per_span(const SceneCurve& c) {
 }
 
 Polyline free_curve_polyline(const SceneCurve& c) {
+  return free_curve_polyline(c, free_curve_samples_per_span(c));
+}
+
+Polyline free_curve_polyline(const SceneCurve& c, int per_span) {
   Polyline l;
-  for (double t : curve_sample_parameters(c, free_curve_samples_per_span(c)))
-    l.push_back(evaluate(c, t).p);
+  const std::vector<double> ts = curve_sample_parameters(c, per_span);
+  l.reserve(ts.size());
+  for (double t : ts) l.push_back(evaluate(c, t).p);
   return l;
+}
+
+std::vector<int> free_curves_samples_per_span(std::span<const SceneCurve> curves) {
+  std::vector<int> own;
+  std::size_t segments = 0;
+  for (const SceneCurve& c : curves) {
+    own.push_back(free_curve_samples_per_span(c));
+    segments += curve_span_count(c) * std::size_t(own.back());
+  }
+  if (segments <= kFreeCurveSegmentBudget) return own;
+  const double size = curves_size(curves);
+  constexpr double kPixels = 4096 * 1.4142135623730951 / 2;  // 2 px a segment
+  for (std::size_t i = 0; i < curves.size(); ++i) {
+    const SceneCurve& c = curves[i];
+    const bool control =
+        c.type == CurveType::BSpline || c.type == CurveType::Nurbs || c.type == CurveType::Bezier;
+    const std::vector<Vec3>& points = control ? c.points : spline_form(c).points;
+    double polygon = 0;
+    for (std::size_t k = 1; k < points.size(); ++k)
+      polygon += glm::length(points[k] - points[k - 1]);
+    const double wanted = size > 0 ? polygon / size * kPixels / double(curve_span_count(c)) : 1.0;
+    own[i] = std::clamp(static_cast<int>(std::ceil(std::min(wanted, 1e9))), 1, own[i]);
+  }
+  return own;
 }
 
 CurvatureComb free_curve_span_comb(const SceneCurve& c, std::pair<double, double> span,
@@ -112,7 +143,11 @@ std::vector<CurvatureComb> free_curve_combs(const SceneCurve& c, int comb_teeth)
 }
 
 void append_free_curve(DrawScene& d, const SceneCurve& c, int comb_teeth) {
-  d.free_curves.push_back(free_curve_polyline(c));
+  append_free_curve(d, c, comb_teeth, free_curve_samples_per_span(c));
+}
+
+void append_free_curve(DrawScene& d, const SceneCurve& c, int comb_teeth, int per_span) {
+  d.free_curves.push_back(free_curve_polyline(c, per_span));
   if (comb_teeth > 0)
     for (CurvatureComb& comb : free_curve_combs(c, comb_teeth))
       d.free_curve_combs.push_back(std::move(comb));
@@ -140,7 +175,9 @@ int closed_orientation(const Scene& scene, const SceneSurfaces& surfaces,
 
 DrawScene build_draw_scene(const Scene& scene, const SceneSurfaces& surfaces, int comb_teeth) {
   DrawScene d;
-  for (const SceneCurve& c : scene.curves) append_free_curve(d, c, comb_teeth);
+  const std::vector<int> per_span = free_curves_samples_per_span(scene.curves);
+  for (std::size_t i = 0; i < scene.curves.size(); ++i)
+    append_free_curve(d, scene.curves[i], comb_teeth, per_span[i]);
   for (const SceneSurface& s : surfaces.surfaces) {
     d.surfaces.push_back(make_surface_mesh(*s.evaluator, s.name));
     for (CurvatureComb& c : surface_borders(s, comb_teeth)) {

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <map>
+#include <span>
 
 #include "core/eval/scene_surfaces.hpp"
 #include "core/scene/scene.hpp"
@@ -51,12 +52,26 @@ std::vector<CurvatureComb> network_combs(const Network& network, int comb_teeth)
 // The samples per span a free curve is drawn with (about kCurveSegments in all, 8 at least).
 int free_curve_samples_per_span(const SceneCurve& curve);
 Polyline free_curve_polyline(const SceneCurve& curve);
+// The same at per_span samples per span.
+Polyline free_curve_polyline(const SceneCurve& curve, int per_span);
+// The segments the free curves of one picture are drawn with, in all, before their sizes are
+// looked at: past it (thousands of curves or spans) a curve gets about one segment per 2 pixels
+// of the longest picture it can take (its control polygon's length over the curves' size, times
+// the 4096 x 4096 picture's diagonal), one per span at least and never more than its own count:
+// the drawing's cost follows the length drawn and the number of spans, and llvmpipe no longer
+// rasterises 64 segments of a curve less than a pixel long.
+inline constexpr std::size_t kFreeCurveSegmentBudget = std::size_t(1) << 16;
+// The samples per span of each of these curves (free_curve_samples_per_span, or the reduced
+// count above when their sum is over kFreeCurveSegmentBudget).
+std::vector<int> free_curves_samples_per_span(std::span<const SceneCurve> curves);
 std::vector<CurvatureComb> free_curve_combs(const SceneCurve& curve, int comb_teeth);
 // The comb of one span [t0, t1] of the curve (one of free_curve_combs).
 CurvatureComb free_curve_span_comb(const SceneCurve& curve, std::pair<double, double> span,
                                    int comb_teeth);
 // The curve, its comb (comb_teeth > 0) and its control polygon appended to d.
 void append_free_curve(DrawScene& d, const SceneCurve& curve, int comb_teeth);
+// The same with the polyline at per_span samples per span.
+void append_free_curve(DrawScene& d, const SceneCurve& curve, int comb_teeth, int per_span);
 
 // One per domain side of the surface, from the surface jet along the side (exact for every patch
 // type; boundary_curves() only approximates some types' sides): the points are the border drawn,

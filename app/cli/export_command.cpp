@@ -2,16 +2,17 @@
 #include <cmath>
 
 #include "app/cli/arguments.hpp"
+#include "app/cli/cad_scale.hpp"
+#include "app/cli/checked_scene.hpp"
 #include "app/cli/cli.hpp"
 #include "app/cli/commands.hpp"
 #include "app/cli/load_input.hpp"
 #include "app/cli/progress_line.hpp"
 #include "app/cli/scene_outputs.hpp"
 #include "app/cli/work_limits.hpp"
-#include "core/analysis/curve_analysis.hpp"
 #include "core/cad/cad_export.hpp"
-#include "core/eval/scene_surfaces.hpp"
 #include "core/io/input_limits.hpp"
+#include "core/io/json_node.hpp"
 #include "core/mesh/mesh_export.hpp"
 #include "core/mesh/polyline.hpp"
 
@@ -27,14 +28,25 @@ double tolerance_option(const std::string& v) {
   return t;
 }
 
-// STEP / IGES: B-spline faces through OpenCASCADE (core/cad/cad_export.hpp).
+// STEP / IGES: B-spline faces through OpenCASCADE (core/cad/cad_export.hpp), after the checks
+// every command runs (at the default density: what `analyze FILE` refuses is refused here with
+// the same message) and the scale range of the CAD writers.
 int export_cad_file(const Arguments& a, const std::string& target, std::ostream& out) {
   if (a.value("--density")) throw UsageError("--density applies to mesh output only");
   CadExportOptions options;
   if (const auto t = a.value("--tolerance")) options.tolerance = tolerance_option(*t);
   options.scheme = parse_scheme_option(a.value("--scheme"));
   options.source = a.positional()[0];
+  ProgressLine::set_stage("reading " + printable(options.source));
   const Scene scene = load_input(options.source);
+  // A scene too big for the work bound at the default density is checked at the largest density
+  // within it (the CAD writers sample nothing at a density).
+  const int density = std::max(1, largest_density_within(scene, kDefaultDensity));
+  TessellationCache cache;
+  evaluate_checked(scene, density, options.scheme, cache, options.source);
+  // What every command accepts, then the CAD writers' own range.
+  check_cad_scale(scene, options.source);
+  ProgressLine::set_stage("fitting and writing " + printable(target));
   out << cad_report_text(export_cad(scene, target, options));
   return kExitOk;
 }
@@ -44,21 +56,17 @@ int export_cad_file(const Arguments& a, const std::string& target, std::ostream&
 MeshExportCount export_mesh_file(const Scene& scene, const std::filesystem::path& target,
                                  int density, std::optional<FaceScheme> scheme,
                                  const std::string& source) {
-  mesh_format_for(target);  // reject an unknown format before any work
-  check_work_limits(scene, density, source);
+  const MeshFormat format = mesh_format_for(target);  // an unknown format before any work
   TessellationCache cache;
-  ProgressLine::set_stage("evaluating the surfaces");
-  const SceneSurfaces surfaces = evaluate_scene(scene, density, scheme, cache, source);
+  const SceneSurfaces surfaces = evaluate_checked(scene, density, scheme, cache, source);
   std::vector<SurfaceMesh> meshes;
   for (const SceneSurface& s : surfaces.surfaces)
     meshes.push_back(make_surface_mesh(*s.evaluator, s.name));
-  for (std::size_t i = 0; i < scene.curves.size(); ++i)
-    check_curve_finite(scene.curves[i], i, density, source);
   std::vector<CurvePolyline> polylines;
-  if (mesh_format_for(target) == MeshFormat::Obj)
+  if (format == MeshFormat::Obj)
     for (std::size_t i = 0; i < scene.curves.size(); ++i)
       polylines.push_back(curve_polyline(scene.curves[i], curve_name(scene.curves[i], i), density));
-  ProgressLine::set_stage("writing " + target.string());
+  ProgressLine::set_stage("writing " + printable(target.string()));
   export_meshes(meshes, target, source, polylines);
   return {meshes.size(), polylines.size()};
 }
@@ -66,7 +74,7 @@ MeshExportCount export_mesh_file(const Scene& scene, const std::filesystem::path
 std::string mesh_export_summary(const MeshExportCount& n, const std::string& target) {
   std::string s = "wrote " + std::to_string(n.patches) + " patch(es)";
   if (n.curves > 0) s += " and " + std::to_string(n.curves) + " curve(s)";
-  return s + " to " + target + "\n";
+  return s + " to " + printable(target) + "\n";
 }
 
 int run_export(std::span<const std::string> args, std::ostream& out, std::ostream&) {
@@ -74,16 +82,21 @@ int run_export(std::span<const std::string> args, std::ostream& out, std::ostrea
   if (a.positional().size() != 1) throw UsageError("export takes exactly one input FILE");
   const auto target = a.value("-o");
   if (!target) throw UsageError("export needs -o OUT.{obj,ply,off,stl,step,stp,igs,iges}");
-  if (cad_format_for(*target)) return export_cad_file(a, *target, out);
-  if (a.value("--tolerance")) throw UsageError("--tolerance applies to STEP and IGES output only");
-  const int density = a.integer("--density", 32, 1, kMaxDensity);
-  const auto scheme = parse_scheme_option(a.value("--scheme"));
-  mesh_format_for(*target);  // reject an unknown format before reading
   const std::string file = a.positional()[0];
-  ProgressLine::set_stage("reading " + file);
+  check_input_name(file);
+  // The output's extension is part of the command line: an unknown one is wrong usage, as for
+  // `render` and `convert`.
+  const auto mesh_format = find_mesh_format(*target);
+  if (!mesh_format && !cad_format_for(*target))
+    throw UsageError("export writes .obj, .ply, .off, .stl, .step, .stp, .igs or .iges, not \"" +
+                     std::filesystem::path(*target).extension().string() + "\"");
+  if (!mesh_format) return export_cad_file(a, *target, out);
+  if (a.value("--tolerance")) throw UsageError("--tolerance applies to STEP and IGES output only");
+  const int density = a.integer("--density", kDefaultDensity, 1, kMaxDensity);
+  const auto scheme = parse_scheme_option(a.value("--scheme"));
+  ProgressLine::set_stage("reading " + printable(file));
   const Scene scene = load_input(file);
-  const MeshExportCount n = export_mesh_file(scene, *target, density, scheme, file);
-  out << mesh_export_summary(n, *target);
+  out << mesh_export_summary(export_mesh_file(scene, *target, density, scheme, file), *target);
   return kExitOk;
 }
 

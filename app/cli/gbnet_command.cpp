@@ -10,6 +10,7 @@
 #include "app/cli/commands.hpp"
 #include "core/base/data_error.hpp"
 #include "core/io/gbp_io.hpp"
+#include "core/io/json_node.hpp"
 #include "core/patch/gb/default_net.hpp"
 #include "core/patch/gb/elevation.hpp"
 
@@ -44,8 +45,8 @@ int run_gbnet(std::span<const std::string> args, std::ostream& out, std::ostream
   if (defaults) patch = gb_default_net(patch, *defaults == "boundary" ? 1 : 2);
   for (int e = 0; e < elevate; ++e) patch = gb_elevate(patch);
   write_gbp(*target, patch);
-  out << "wrote " << *target << " (" << patch.sides() << " sides, degree " << patch.degree()
-      << ")\n";
+  out << "wrote " << printable(*target) << " (" << patch.sides() << " sides, degree "
+      << patch.degree() << ")\n";
   return kExitOk;
 }
 

@@ -20,6 +20,12 @@ Scene load_input(const std::filesystem::path& path) {
   throw DataError(path.string(), "", "unknown file type \"" + ext + "\" (expected .json or .gbp)");
 }
 
+void check_input_name(const std::string& file) {
+  const std::string ext = std::filesystem::path(file).extension().string();
+  if (ext != ".json" && ext != ".gbp")
+    throw UsageError("FILE is a scene (.json) or a GB net (.gbp), not \"" + file + "\"");
+}
+
 std::optional<FaceScheme> parse_scheme_option(const std::optional<std::string>& value) {
   if (!value) return std::nullopt;
   if (const auto s = parse_scheme_keyword(*value); s && *s != FaceScheme::Auto) return s;

@@ -6,6 +6,7 @@
 
 #include "app/cli/arguments.hpp"
 #include "app/cli/camera_file.hpp"
+#include "app/cli/checked_scene.hpp"
 #include "app/cli/cli.hpp"
 #include "app/cli/commands.hpp"
 #include "app/cli/draw_scene_builder.hpp"
@@ -18,6 +19,7 @@
 #include "core/base/data_error.hpp"
 #include "core/io/atomic_file.hpp"
 #include "core/io/input_limits.hpp"
+#include "core/io/json_node.hpp"
 #include "core/mesh/finite_check.hpp"
 #include "render/default_view.hpp"
 #include "render/egl_context.hpp"
@@ -88,26 +90,24 @@ RenderedImage render_scene_image(const Scene& scene, const RenderJob& job,
                                  const std::string& file) {
   const DisplaySettings& settings = job.settings;
   const auto preset = job.view ? parse_view_preset(*job.view) : std::nullopt;
-  check_work_limits(scene, job.density, file);
   if (job.compare && !scene.network)
     throw DataError(file, "", "--compare needs a scene with a curve network");
-  for (std::size_t i = 0; i < scene.curves.size(); ++i)
-    check_curve_finite(scene.curves[i], i, job.density, file);
   TessellationCache cache;
-  ProgressLine::set_stage("evaluating the surfaces");
   // No comb work unless combs are drawn.
   const int teeth = settings.combs ? settings.comb_teeth : 0;
   std::vector<DrawScene> draws;
   std::vector<std::string> labels;
   if (job.compare) {
     for (FaceScheme s : job.compared) {
-      const SceneSurfaces surfaces = evaluate_scene(scene, job.density, s, cache, file);
+      const SceneSurfaces surfaces = evaluate_checked(scene, job.density, s, cache, file);
+      ProgressLine::set_stage("preparing the drawing");
       draws.push_back(build_draw_scene(scene, surfaces, teeth));
       labels.push_back(s == FaceScheme::GB ? "Generalized Bézier" : scheme_title(s));
     }
   } else {
-    draws.push_back(build_draw_scene(
-        scene, evaluate_scene(scene, job.density, job.scheme, cache, file), teeth));
+    const SceneSurfaces surfaces = evaluate_checked(scene, job.density, job.scheme, cache, file);
+    ProgressLine::set_stage("preparing the drawing");
+    draws.push_back(build_draw_scene(scene, surfaces, teeth));
     labels.emplace_back();
   }
 
@@ -166,10 +166,13 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
       {"--compare", "--transparent", "--flat"});
   if (a.positional().size() != 1) throw UsageError("render takes exactly one input FILE");
   const auto target = a.value("-o");
-  if (!target || !ends_with_png(*target)) throw UsageError("render needs -o OUT.png");
+  if (!target) throw UsageError("render needs -o OUT.png");
+  if (!ends_with_png(*target))
+    throw UsageError("render writes .png, not \"" +
+                     std::filesystem::path(*target).extension().string() + "\"");
   RenderJob job;
   std::tie(job.width, job.height) = parse_size(a.value("--size"));
-  job.density = a.integer("--density", 32, 1, kMaxDensity);
+  job.density = a.integer("--density", kDefaultDensity, 1, kMaxDensity);
   job.scheme = parse_scheme_option(a.value("--scheme"));
   job.compare = a.flag("--compare");
   if (job.compare && job.scheme) throw UsageError("--compare renders both schemes; drop --scheme");
@@ -181,8 +184,17 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
   job.settings = parse_settings(a);
   // No --view: the default view (render/default_view.hpp), which faces a single patch's front.
   job.view = a.value("--view");
+  // Anything else must name a camera file: a word that is neither is a mistyped preset.
+  if (job.view && !parse_view_preset(*job.view) &&
+      std::filesystem::path(*job.view).extension() != ".json")
+    throw UsageError(
+        "--view takes iso, front, back, left, right, top, bottom or a camera "
+        "file NAME.json, got \"" +
+        *job.view + "\"");
 
   const std::string file = a.positional()[0];
+  check_input_name(file);
+  ProgressLine::set_stage("reading " + printable(file));
   const Scene scene = load_input(file);
   std::size_t patches = 0;
   try {
@@ -190,16 +202,16 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
     patches = r.patches;
     write_file_atomically(*target, encode_png(r.image));
   } catch (const GlContextError& e) {
-    err << "patchlab: cannot render " << file << ": " << e.what() << "\n";
+    err << "patchlab: cannot render " << printable(file) << ": " << printable(e.what()) << "\n";
     return kExitBadInput;
   } catch (const DataError&) {
     throw;
   } catch (const std::runtime_error& e) {
-    err << "patchlab: cannot render " << file << ": " << e.what() << "\n";
+    err << "patchlab: cannot render " << printable(file) << ": " << printable(e.what()) << "\n";
     return kExitBadInput;
   }
   out << "wrote " << job.width << "x" << job.height << " image of " << patches << " patch(es) to "
-      << *target << "\n";
+      << printable(*target) << "\n";
   return kExitOk;
 }
 

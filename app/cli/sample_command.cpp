@@ -6,6 +6,7 @@
 #include "app/cli/arguments.hpp"
 #include "app/cli/cli.hpp"
 #include "app/cli/commands.hpp"
+#include "core/io/json_node.hpp"
 #include "core/io/scene_io.hpp"
 #include "core/network/sample_networks.hpp"
 #include "core/scene/network_edit.hpp"
@@ -34,7 +35,7 @@ int run_sample(std::span<const std::string> args, std::ostream& out, std::ostrea
   scene.name = "cube sphere " + std::to_string(cells) + "x" + std::to_string(cells);
   scene.network = cube_sphere_network(cells, scheme);
   write_scene(*target, scene);
-  out << "wrote " << *target << " (" << scene.network->faces.size() << " faces)\n";
+  out << "wrote " << printable(*target) << " (" << scene.network->faces.size() << " faces)\n";
   return kExitOk;
 }
 

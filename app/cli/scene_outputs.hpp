@@ -8,18 +8,15 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "app/cli/checked_scene.hpp"
 #include "core/analysis/scene_analysis.hpp"
 #include "core/eval/scene_surfaces.hpp"
 #include "render/display_settings.hpp"
 #include "render/image.hpp"
 
 namespace pl {
-
-// The surfaces of the scene at this density, after check_work_limits, each checked finite
-// (check_finite), and the free curves checked finite too: what every output starts from.
-SceneSurfaces evaluate_checked(const Scene& scene, int density, std::optional<FaceScheme> scheme,
-                               TessellationCache& cache, const std::string& source);
 
 // `export FILE -o TARGET` for a mesh format (.obj, .ply, .off, .stl).
 struct MeshExportCount {

@@ -24,35 +24,77 @@ double samples_per_square(int sides) {
 
 }  // namespace
 
-std::size_t estimated_samples(const Scene& scene, int density) {
-  const double square = (density + 1.0) * (density + 1.0);
-  double total = 0;
+namespace {
+
+// What the estimate is made of: squares of (density + 1)^2 samples (surfaces) and curve spans of
+// density + 1 samples each. Counted once; the estimate at any density follows.
+struct WorkShape {
+  double squares = 0, curve_spans = 0;
+  std::size_t samples(int density) const {
+    const double d = density + 1.0;
+    const double total = squares * d * d + curve_spans * d;
+    return total > 1e18 ? std::size_t(1e18) : static_cast<std::size_t>(total);
+  }
+};
+
+WorkShape work_shape(const Scene& scene) {
+  WorkShape w;
   if (scene.network)
     for (const NetworkFace& f : scene.network->faces)
-      total += samples_per_square(static_cast<int>(f.loop.size())) * square;
+      w.squares += samples_per_square(static_cast<int>(f.loop.size()));
   for (const ScenePatch& sp : scene.patches) {
     // A Catmull-Clark entry is one square per ptex face (n per n-gon).
     if (const auto* cc = dynamic_cast<const CatmullClarkPatch*>(sp.patch.get())) {
-      total += double(cc->limit().ptex_count()) * square;
+      w.squares += double(cc->limit().ptex_count());
       continue;
     }
-    total += samples_per_square(sp.patch->domain().side_count()) * square;
+    w.squares += samples_per_square(sp.patch->domain().side_count());
   }
-  for (const SceneCurve& c : scene.curves)  // a curve is cheap: samples per span
-    total += double(curve_spans(c).size()) * (density + 1.0);
-  return total > 1e18 ? std::size_t(1e18) : static_cast<std::size_t>(total);
+  // A curve costs per span: its samples (and a bounded number of quadrature points for its
+  // length, and of polyline points and comb teeth when drawn).
+  for (const SceneCurve& c : scene.curves) w.curve_spans += double(curve_span_count(c));
+  return w;
+}
+
+int largest_density_within(const WorkShape& w, int density) {
+  // The estimate grows with the density (as its square for surfaces, linearly for curves), so
+  // the largest one within the bound is found by bisection.
+  if (w.samples(1) > kMaxSamples) return 0;
+  int lo = 1, hi = density;
+  while (lo < hi) {
+    const int mid = lo + (hi - lo + 1) / 2;
+    if (w.samples(mid) <= kMaxSamples)
+      lo = mid;
+    else
+      hi = mid - 1;
+  }
+  return lo;
+}
+
+}  // namespace
+
+std::size_t estimated_samples(const Scene& scene, int density) {
+  return work_shape(scene).samples(density);
+}
+
+int largest_density_within(const Scene& scene, int density) {
+  return largest_density_within(work_shape(scene), density);
 }
 
 void check_work_limits(const Scene& scene, int density, const std::string& source) {
-  const std::size_t n = estimated_samples(scene, density);
+  const WorkShape w = work_shape(scene);
+  const std::size_t n = w.samples(density);
   if (n <= kMaxSamples) return;
-  // Samples grow with the square of the density.
-  const int fits =
-      std::max(1, static_cast<int>((density + 1) * std::sqrt(double(kMaxSamples) / double(n))) - 1);
+  const int fits = largest_density_within(w, density);
+  const std::string head = "at density " + std::to_string(density) + " the scene takes about " +
+                           std::to_string(n) + " samples; at most " + std::to_string(kMaxSamples) +
+                           " are evaluated";
+  if (fits > 0)
+    throw DataError(source, "", head + " (use --density " + std::to_string(fits) + " or less)");
+  // Not even density 1 fits: the scene itself is too big (a curve of millions of spans, say).
   throw DataError(source, "",
-                  "at density " + std::to_string(density) + " the scene takes about " +
-                      std::to_string(n) + " samples; at most " + std::to_string(kMaxSamples) +
-                      " are evaluated (use --density " + std::to_string(fits) + " or less)");
+                  head + ", and " + std::to_string(w.samples(1)) +
+                      " at --density 1: too many surfaces or curve spans for one command");
 }
 
 }  // namespace pl

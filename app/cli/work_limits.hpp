@@ -13,6 +13,9 @@ namespace pl {
 // the tessellation of a face's domain is made only during the evaluation).
 std::size_t estimated_samples(const Scene& scene, int density);
 
+// The largest density from 1 to `density` whose estimate is within kMaxSamples; 0 if none.
+int largest_density_within(const Scene& scene, int density);
+
 // Throws DataError(source, ...) naming the density to use instead when the scene at this density
 // would take more than kMaxSamples samples.
 void check_work_limits(const Scene& scene, int density, const std::string& source);

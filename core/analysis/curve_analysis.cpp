@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <limits>
+#include <unordered_map>
 
 #include "core/base/data_error.hpp"
 #include "core/curve/curvature.hpp"
@@ -42,18 +45,31 @@ const GaussLegendre& gauss() {
   return g;
 }
 
-double span_length(const SceneCurve& c, double a, double b, int pieces) {
+// The length of the curve over [lo, hi] by one 16-point Gauss-Legendre rule.
+double piece_length(const SceneCurve& c, double lo, double hi) {
   const GaussLegendre& g = gauss();
-  double sum = 0;
-  for (int k = 0; k < pieces; ++k) {
-    const double lo = a + (b - a) * k / pieces, hi = a + (b - a) * (k + 1) / pieces;
-    const double half = (hi - lo) / 2, mid = (hi + lo) / 2;
-    double s = 0;
-    for (int i = 0; i < kGaussPoints; ++i)
-      s += g.w[i] * glm::length(evaluate(c, mid + half * g.x[i]).d1);
-    sum += half * s;
-  }
-  return sum;
+  const double half = (hi - lo) / 2, mid = (hi + lo) / 2;
+  double s = 0;
+  for (int i = 0; i < kGaussPoints; ++i)
+    s += g.w[i] * glm::length(evaluate(c, mid + half * g.x[i]).d1);
+  return half * s;
+}
+
+// Deepest halving: 4,096 pieces of a span, as the uniform refinement this replaces went.
+constexpr int kMaxHalvings = 12;
+
+// `whole` (the rule on [lo, hi]) refined where it needs it: a piece whose two halves sum to it
+// within `tol` is done; otherwise each half is refined the same way. Only the pieces near a
+// point where |C'| is not smooth (a cusp, where it vanishes) go deep, so a span costs a few
+// dozen evaluations, not the thousands a uniform refinement of the whole span took there.
+double refined_length(const SceneCurve& c, double lo, double hi, double whole, double tol,
+                      int halvings) {
+  const double mid = (lo + hi) / 2;
+  const double left = piece_length(c, lo, mid), right = piece_length(c, mid, hi);
+  if (std::abs(left + right - whole) <= tol || halvings == 0 || !std::isfinite(left + right))
+    return left + right;
+  return refined_length(c, lo, mid, left, tol, halvings - 1) +
+         refined_length(c, mid, hi, right, tol, halvings - 1);
 }
 
 // A unit normal of the plane holding every control point, or zero if they are not in one plane
@@ -83,28 +99,50 @@ Vec3 plane_normal(const std::vector<Vec3>& pts) {
 
 double curve_length(const SceneCurve& c) {
   double total = 0;
+  // C' is a sum of the control points times basis derivatives of about the degree over the
+  // span: its rounding error is about eps times the degree times the largest coordinate, over
+  // the span's parameter length, so a span's length cannot agree to better than about eps p M.
+  // Far from the origin (a scan in world coordinates) that is above 1e-13 of the length, and
+  // asking for 1e-13 halved every span to the deepest level: thousands of evaluations each.
+  double largest = 0;
+  const bool own =
+      c.type == CurveType::BSpline || c.type == CurveType::Nurbs || c.type == CurveType::Bezier;
+  for (const Vec3& q : own ? c.points : spline_form(c).points)
+    largest = std::max({largest, std::abs(q.x), std::abs(q.y), std::abs(q.z)});
+  const double rounding = 64 * std::numeric_limits<double>::epsilon() * curve_degree(c) * largest;
   for (const auto& [a, b] : curve_spans(c)) {
-    double prev = span_length(c, a, b, 1);
-    for (int pieces = 2; pieces <= 4096; pieces *= 2) {
-      const double next = span_length(c, a, b, pieces);
-      const bool done = std::abs(next - prev) <= 1e-13 * std::abs(next);
-      prev = next;
-      if (done) break;
-    }
-    total += prev;
+    const double whole = piece_length(c, a, b);
+    const double tol = std::max(1e-13 * std::abs(whole), rounding);
+    total += refined_length(c, a, b, whole, tol, kMaxHalvings);
   }
   return total;
 }
 
-int curve_inflections(const SceneCurve& c, int per_span) {
+namespace {
+
+// A curve's samples, evaluated once for every figure taken from them.
+struct CurveSampling {
+  std::vector<double> t;
+  std::vector<CurvePoint> p;
+};
+
+CurveSampling sample_curve(const SceneCurve& c, int per_span) {
+  CurveSampling s;
+  s.t = curve_sample_parameters(c, per_span);
+  s.p.reserve(s.t.size());
+  for (double t : s.t) s.p.push_back(evaluate(c, t));
+  return s;
+}
+
+int inflections_of(const SceneCurve& c, const CurveSampling& s) {
   const Vec3 n = plane_normal(spline_form(c).points);
   if (n == Vec3(0)) return 0;
   std::vector<double> k;
+  k.reserve(s.p.size());
   double kmax = 0;
-  for (double t : curve_sample_parameters(c, per_span)) {
-    const CurvePoint p = evaluate(c, t);
-    const double s = glm::length(p.d1);
-    k.push_back(s == 0 ? 0.0 : glm::dot(glm::cross(p.d1, p.d2), n) / (s * s * s));
+  for (const CurvePoint& p : s.p) {
+    const double speed = glm::length(p.d1);
+    k.push_back(speed == 0 ? 0.0 : glm::dot(glm::cross(p.d1, p.d2), n) / (speed * speed * speed));
     if (std::isfinite(k.back())) kmax = std::max(kmax, std::abs(k.back()));
   }
   // Curvature below this is rounding noise of a straight piece: no sign there.
@@ -119,17 +157,17 @@ int curve_inflections(const SceneCurve& c, int per_span) {
   return changes;
 }
 
-CurveReport analyze_curve(const SceneCurve& c, const std::string& name, int per_span) {
+CurveReport report_of(const SceneCurve& c, const std::string& name, const CurveSampling& s,
+                      double length) {
   CurveReport r;
   r.name = name;
   r.type = std::string(curve_type_name(c.type));
   r.degree = curve_degree(c);
   r.control_points = static_cast<int>(c.points.size());
-  r.spans = static_cast<int>(curve_spans(c).size());
-  r.length = curve_length(c);
+  r.spans = static_cast<int>(curve_span_count(c));
+  r.length = length;
   r.curvature = {std::numeric_limits<double>::infinity(), 0};
-  for (double t : curve_sample_parameters(c, per_span)) {
-    const CurvePoint p = evaluate(c, t);
+  for (const CurvePoint& p : s.p) {
     const double k = curve_curvature(p);
     if (!std::isfinite(k) || !std::isfinite(p.p.x + p.p.y + p.p.z)) {
       ++r.nonfinite_samples;
@@ -139,23 +177,56 @@ CurveReport analyze_curve(const SceneCurve& c, const std::string& name, int per_
     r.curvature[1] = std::max(r.curvature[1], k);
   }
   if (r.curvature[0] > r.curvature[1]) r.curvature = {0, 0};
-  r.inflections = curve_inflections(c, per_span);
+  r.inflections = inflections_of(c, s);
   return r;
+}
+
+// Throw check_curve_finite's DataErrors: for the first sample that is not finite, for a length
+// that is not.
+void check_samples(const CurveSampling& s, std::size_t index, const std::string& source) {
+  auto finite = [](const Vec3& v) { return std::isfinite(v.x + v.y + v.z); };
+  for (std::size_t k = 0; k < s.p.size(); ++k) {
+    const CurvePoint& p = s.p[k];
+    if (!finite(p.p) || !finite(p.d1) || !finite(p.d2) || !std::isfinite(curve_curvature(p))) {
+      char t[32];
+      std::snprintf(t, sizeof t, "%.9g", s.t[k]);  // short, even for a knot of 1e153
+      throw DataError(source, "curves[" + std::to_string(index) + "]",
+                      "the curve is not finite at t = " + std::string(t) +
+                          " (its numbers overflow when evaluated)");
+    }
+  }
+}
+
+void check_length(double length, std::size_t index, const std::string& source) {
+  if (!std::isfinite(length))
+    throw DataError(source, "curves[" + std::to_string(index) + "]",
+                    "the curve's length is not finite (its numbers overflow when evaluated)");
+}
+
+}  // namespace
+
+int curve_inflections(const SceneCurve& c, int per_span) {
+  return inflections_of(c, sample_curve(c, per_span));
+}
+
+CurveReport analyze_curve(const SceneCurve& c, const std::string& name, int per_span) {
+  return report_of(c, name, sample_curve(c, per_span), curve_length(c));
 }
 
 void check_curve_finite(const SceneCurve& c, std::size_t index, int per_span,
                         const std::string& source) {
-  auto finite = [](const Vec3& v) { return std::isfinite(v.x + v.y + v.z); };
-  for (double t : curve_sample_parameters(c, per_span)) {
-    const CurvePoint p = evaluate(c, t);
-    if (!finite(p.p) || !finite(p.d1) || !finite(p.d2) || !std::isfinite(curve_curvature(p)))
-      throw DataError(source, "curves[" + std::to_string(index) + "]",
-                      "the curve is not finite at t = " + std::to_string(t) +
-                          " (its numbers overflow when evaluated)");
-  }
-  if (!std::isfinite(curve_length(c)))
-    throw DataError(source, "curves[" + std::to_string(index) + "]",
-                    "the curve's length is not finite (its numbers overflow when evaluated)");
+  // The samples first: a curve whose samples overflow is named at the first such sample.
+  check_samples(sample_curve(c, per_span), index, source);
+  check_length(curve_length(c), index, source);
+}
+
+CurveReport checked_curve_report(const SceneCurve& c, std::size_t index, int per_span,
+                                 const std::string& source) {
+  const CurveSampling s = sample_curve(c, per_span);
+  check_samples(s, index, source);
+  const double length = curve_length(c);
+  check_length(length, index, source);
+  return report_of(c, curve_name(c, index), s, length);
 }
 
 Vec3 curvature_vector(const CurvePoint& c) {
@@ -184,16 +255,34 @@ int joint_continuity(const JointReport& j, double size, double angle_deg, double
   return 1;
 }
 
+namespace {
+
+// The box around the curves' control points (their spline form's: each curve lies in the hull of
+// those, so its ends lie in the box).
+std::pair<Vec3, Vec3> curves_box(std::span<const SceneCurve> curves) {
+  Vec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  for (const SceneCurve& c : curves) {
+    // The spline types' points are their control points; the others' are turned into theirs.
+    const bool own =
+        c.type == CurveType::BSpline || c.type == CurveType::Nurbs || c.type == CurveType::Bezier;
+    for (const Vec3& q : own ? c.points : spline_form(c).points)
+      lo = glm::min(lo, q), hi = glm::max(hi, q);
+  }
+  return {lo, hi};
+}
+
+}  // namespace
+
 double curves_size(std::span<const SceneCurve> curves) {
   if (curves.empty()) return 0.0;
-  Vec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-  for (const SceneCurve& c : curves)
-    for (const Vec3& q : spline_form(c).points) lo = glm::min(lo, q), hi = glm::max(hi, q);
+  const auto [lo, hi] = curves_box(curves);
   return glm::length(hi - lo);
 }
 
 std::vector<JointReport> curve_joints(std::span<const SceneCurve> curves) {
-  const double tol = 1e-9 * curves_size(curves);
+  if (curves.empty()) return {};
+  const auto [lo, hi] = curves_box(curves);
+  const double tol = 1e-9 * glm::length(hi - lo);
   // Each end with its derivatives pointing along the direction of travel out of the joint: the
   // end of a curve arrives as it runs; its start arrives when the curve is run backwards
   // (C' negated, C'' kept).
@@ -203,27 +292,64 @@ std::vector<JointReport> curve_joints(std::span<const SceneCurve> curves) {
     CurvePoint p;
   };
   std::vector<End> ends;
+  ends.reserve(2 * curves.size());
   for (std::size_t i = 0; i < curves.size(); ++i) {
     ends.push_back({int(i), true, evaluate(curves[i], curves[i].t_min())});
     ends.push_back({int(i), false, evaluate(curves[i], curves[i].t_max())});
   }
-  std::vector<JointReport> out;
-  for (std::size_t i = 0; i < ends.size(); ++i)
-    for (std::size_t j = i + 1; j < ends.size(); ++j) {
-      const End &e = ends[i], &f = ends[j];
-      if (glm::length(e.p.p - f.p.p) > tol) continue;
-      if (e.curve == f.curve && e.start == f.start) continue;
-      // Travel from the arriving end into the leaving one: an end arrives as is, a start
-      // arrives reversed; a start leaves as is, an end leaves reversed.
-      CurvePoint arrive = e.p, leave = f.p;
-      if (e.start) arrive.d1 = -arrive.d1;
-      if (!f.start) leave.d1 = -leave.d1;
-      JointReport r = joint_figures(arrive, leave);
-      r.curves = {e.curve, f.curve};
-      r.at_start = {e.start, f.start};
-      r.position = e.p.p;
-      out.push_back(r);
+  // Ends closer than tol lie in the same or neighbouring cells of a grid of that spacing, so each
+  // end is compared with the few ends near it, not with all of them. Cells are counted from the
+  // box's corner (at most about 1e9 cells a side, exact in a 64-bit integer). A cell a little
+  // wider than tol keeps two ends tol apart in neighbouring cells despite the rounding of the
+  // division.
+  const double cell = tol > 0 ? tol * (1 + 1e-6) : 1.0;
+  // An end that is not finite meets no other (its figures would be NaN).
+  auto finite = [](const Vec3& p) { return std::isfinite(p.x + p.y + p.z); };
+  auto cell_of = [&](const Vec3& p) {
+    std::array<std::int64_t, 3> k{};
+    for (int a = 0; a < 3; ++a)
+      k[a] = static_cast<std::int64_t>(std::clamp(std::floor((p[a] - lo[a]) / cell), -1.0, 2e9));
+    return k;
+  };
+  struct CellHash {
+    std::size_t operator()(const std::array<std::int64_t, 3>& k) const {
+      return std::hash<std::int64_t>()(k[0] * 73856093 ^ k[1] * 19349663 ^ k[2] * 83492791);
     }
+  };
+  std::unordered_map<std::array<std::int64_t, 3>, std::vector<std::size_t>, CellHash> grid;
+  grid.reserve(ends.size());
+  for (std::size_t i = 0; i < ends.size(); ++i)
+    if (finite(ends[i].p.p)) grid[cell_of(ends[i].p.p)].push_back(i);
+  // The pairs (i, j), i < j, in the order a comparison of every pair would find them.
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (std::size_t i = 0; i < ends.size(); ++i) {
+    if (!finite(ends[i].p.p)) continue;
+    const auto k = cell_of(ends[i].p.p);
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy)
+        for (std::int64_t dz = -1; dz <= 1; ++dz) {
+          const auto it = grid.find({k[0] + dx, k[1] + dy, k[2] + dz});
+          if (it == grid.end()) continue;
+          for (std::size_t j : it->second)
+            if (j > i && glm::length(ends[i].p.p - ends[j].p.p) <= tol) pairs.emplace_back(i, j);
+        }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  std::vector<JointReport> out;
+  for (const auto& [i, j] : pairs) {
+    const End &e = ends[i], &f = ends[j];
+    if (e.curve == f.curve && e.start == f.start) continue;
+    // Travel from the arriving end into the leaving one: an end arrives as is, a start
+    // arrives reversed; a start leaves as is, an end leaves reversed.
+    CurvePoint arrive = e.p, leave = f.p;
+    if (e.start) arrive.d1 = -arrive.d1;
+    if (!f.start) leave.d1 = -leave.d1;
+    JointReport r = joint_figures(arrive, leave);
+    r.curves = {e.curve, f.curve};
+    r.at_start = {e.start, f.start};
+    r.position = e.p.p;
+    out.push_back(r);
+  }
   return out;
 }
 

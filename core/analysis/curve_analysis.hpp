@@ -37,8 +37,10 @@ struct JointReport {
 int joint_continuity(const JointReport& j, double size, double angle_deg = 1e-6,
                      double relative = 1e-6);
 
-// Arc length by Gauss-Legendre quadrature on every span, subdivided until two successive
-// refinements agree to 1e-13 relative.
+// Arc length by Gauss-Legendre quadrature on every span, each piece halved until its halves
+// agree with it to 1e-13 of the span's length, or to the rounding of C' (64 eps times the degree
+// times the largest coordinate) where that is larger, at most 12 halvings deep; only the pieces
+// that need it are halved.
 double curve_length(const SceneCurve& c);
 
 // Signed-curvature sign changes along t for a planar curve (0 for a curve that is not planar or
@@ -67,6 +69,11 @@ std::vector<JointReport> curve_joints(std::span<const SceneCurve> curves);
 // exports of a curve are finite or refused.
 void check_curve_finite(const SceneCurve& c, std::size_t index, int per_span,
                         const std::string& source);
+
+// analyze_curve's report (name: curve_name(c, index)) after check_curve_finite's checks, with the
+// samples and the length computed once for both.
+CurveReport checked_curve_report(const SceneCurve& c, std::size_t index, int per_span,
+                                 const std::string& source);
 
 // Curvature vector kappa N = (C'' - (C''.T) T) / |C'|^2: the same whichever way the curve runs.
 Vec3 curvature_vector(const CurvePoint& c);

@@ -108,10 +108,16 @@ double angle_deg(const Vec3& a, const Vec3& b) {
 }
 
 SceneReport analyze_scene(const Scene& scene, const SceneSurfaces& ss, int curve_samples) {
-  SceneReport r;
+  std::vector<CurveReport> curves;
   for (std::size_t i = 0; i < scene.curves.size(); ++i)
-    r.curves.push_back(
-        analyze_curve(scene.curves[i], curve_name(scene.curves[i], i), curve_samples));
+    curves.push_back(analyze_curve(scene.curves[i], curve_name(scene.curves[i], i), curve_samples));
+  return analyze_scene(scene, ss, std::move(curves));
+}
+
+SceneReport analyze_scene(const Scene& scene, const SceneSurfaces& ss,
+                          std::vector<CurveReport> curves) {
+  SceneReport r;
+  r.curves = std::move(curves);
   r.joints = curve_joints(scene.curves);
   for (const SceneSurface& s : ss.surfaces) r.patches.push_back(analyze_surface(scene, s));
   for (const SharedEdge& e : ss.shared_edges) r.edges.push_back(analyze_shared_edge(ss, e));

@@ -46,6 +46,10 @@ struct SceneReport {
 // curve_samples: samples per span of each free curve (the CLI's --density).
 SceneReport analyze_scene(const Scene& scene, const SceneSurfaces& surfaces,
                           int curve_samples = 32);
+// The same with the reports of the scene's curves already made (checked_curve_report), one per
+// curve in order.
+SceneReport analyze_scene(const Scene& scene, const SceneSurfaces& surfaces,
+                          std::vector<CurveReport> curves);
 
 // The figures of one surface, and of one edge two faces share (what analyze_scene lists).
 PatchReport analyze_surface(const Scene& scene, const SceneSurface& surface);

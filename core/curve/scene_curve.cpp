@@ -1,10 +1,12 @@
 #include "core/curve/scene_curve.hpp"
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 
 #include "core/curve/hermite_curve.hpp"
 #include "core/curve/interpolating_curve.hpp"
+#include "core/math/bernstein.hpp"
 #include "core/math/bspline_basis.hpp"
 
 namespace pl {
@@ -131,8 +133,21 @@ SceneCurve curve_of_spline(const SplineCurve& s, std::string name) {
 
 CurvePoint evaluate(const SceneCurve& c, double t) {
   switch (c.type) {
-    case CurveType::Bezier:
-      return BezierCurve(c.points).evaluate(t);
+    case CurveType::Bezier: {
+      // BezierCurve::evaluate's sums, on the scene's points and stack arrays: a curve evaluated
+      // at many samples allocates nothing.
+      const int n = static_cast<int>(c.points.size()) - 1;
+      std::array<double, kMaxSplineDegree + 1> d0, d1, d2;
+      bernstein_all_d2(n, t, std::span(d0.data(), n + 1), std::span(d1.data(), n + 1),
+                       std::span(d2.data(), n + 1));
+      CurvePoint r{Vec3(0), Vec3(0), Vec3(0)};
+      for (int i = 0; i <= n; ++i) {
+        r.p += d0[i] * c.points[i];
+        r.d1 += d1[i] * c.points[i];
+        r.d2 += d2[i] * c.points[i];
+      }
+      return r;
+    }
     case CurveType::Interpolating:
       return InterpolatingCurve({c.points[0], c.points[1], c.points[2], c.points[3]}).evaluate(t);
     case CurveType::Hermite:
@@ -147,7 +162,17 @@ CurvePoint evaluate(const SceneCurve& c, double t) {
 
 std::vector<std::pair<double, double>> curve_spans(const SceneCurve& c) {
   if (!is_spline(c.type)) return {{0.0, 1.0}};
-  return spline_spans(spline_form(c));
+  std::vector<std::pair<double, double>> spans;
+  for (std::size_t s = c.degree; s < c.points.size(); ++s)
+    if (c.knots[s] < c.knots[s + 1]) spans.emplace_back(c.knots[s], c.knots[s + 1]);
+  return spans;
+}
+
+std::size_t curve_span_count(const SceneCurve& c) {
+  if (!is_spline(c.type)) return 1;
+  std::size_t n = 0;
+  for (std::size_t s = c.degree; s < c.points.size(); ++s) n += c.knots[s] < c.knots[s + 1];
+  return n;
 }
 
 std::vector<double> curve_sample_parameters(const SceneCurve& c, int per_span) {

@@ -48,6 +48,7 @@ SceneCurve curve_of_spline(const SplineCurve& s, std::string name);
 CurvePoint evaluate(const SceneCurve& c, double t);
 // The spans (non-empty knot intervals in range; [0, 1] for the polynomial types).
 std::vector<std::pair<double, double>> curve_spans(const SceneCurve& c);
+std::size_t curve_span_count(const SceneCurve& c);  // curve_spans(c).size(), without the list
 // The parameters of N + 1 uniform samples per span, span after span, each shared end once.
 std::vector<double> curve_sample_parameters(const SceneCurve& c, int per_span);
 

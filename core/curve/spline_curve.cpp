@@ -37,8 +37,11 @@ SplineCurve from_homogeneous(int p, std::vector<double> knots, const std::vector
   return c;
 }
 
+// How many knots equal t, in a non-decreasing knot vector: O(log n), so that loops over the knots
+// stay linear in their number.
 int multiplicity(const std::vector<double>& U, double t) {
-  return static_cast<int>(std::count(U.begin(), U.end(), t));
+  const auto [lo, hi] = std::equal_range(U.begin(), U.end(), t);
+  return static_cast<int>(hi - lo);
 }
 
 }  // namespace
@@ -61,7 +64,8 @@ void validate_spline_curve(const SplineCurve& c) {
       throw std::invalid_argument("knot " + std::to_string(i) + " is not finite");
     if (i > 0 && c.knots[i] < c.knots[i - 1])
       throw std::invalid_argument("knots must not decrease (knot " + std::to_string(i) + ")");
-    if (multiplicity(c.knots, c.knots[i]) > p + 1)
+    // Knots 0 .. i do not decrease, so this is a run of p + 2 equal knots ending at i.
+    if (i > std::size_t(p) && c.knots[i] == c.knots[i - p - 1])
       throw std::invalid_argument("knot " + std::to_string(i) +
                                   " has multiplicity above degree + 1");
   }

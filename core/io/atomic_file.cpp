@@ -61,6 +61,43 @@ int fsync_path(const std::filesystem::path& p) {
   return r;
 }
 
+// The temporary files being written now, for remove_temporaries_in_flight. A slot is claimed by
+// an atomic exchange, its name copied in, and only then marked readable, so a handler never
+// reads a half-copied name; a name too long for a slot is not listed (the next write to the
+// target still removes it once this process is gone).
+constexpr int kInFlightSlots = 16;
+constexpr std::size_t kInFlightName = 4096;
+struct InFlight {
+  std::atomic<int> state{0};  // 0 free, 1 being filled, 2 readable
+  char name[kInFlightName];
+};
+InFlight in_flight[kInFlightSlots];
+
+// Lists tmp while it exists; a slot index, or -1 when the table is full or the name too long.
+class InFlightEntry {
+ public:
+  explicit InFlightEntry(const std::filesystem::path& tmp) {
+    const std::string& s = tmp.native();
+    if (s.size() >= kInFlightName) return;
+    for (int i = 0; i < kInFlightSlots; ++i) {
+      int expected = 0;
+      if (!in_flight[i].state.compare_exchange_strong(expected, 1)) continue;
+      std::memcpy(in_flight[i].name, s.c_str(), s.size() + 1);
+      in_flight[i].state.store(2);
+      slot_ = i;
+      return;
+    }
+  }
+  ~InFlightEntry() {
+    if (slot_ >= 0) in_flight[slot_].state.store(0);
+  }
+  InFlightEntry(const InFlightEntry&) = delete;
+  InFlightEntry& operator=(const InFlightEntry&) = delete;
+
+ private:
+  int slot_ = -1;
+};
+
 bool process_gone(long pid) {
   return pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH;
 }
@@ -123,6 +160,7 @@ void write_atomically_via(const std::filesystem::path& target,
                           const std::function<void(const std::filesystem::path&)>& produce) {
   remove_stale_temporaries(target);
   const auto tmp = temporary_beside(target);
+  const InFlightEntry listed(tmp);  // listed before the file exists, unlisted after it is gone
   try {
     produce(tmp);
     if (const int e = fsync_path(tmp)) throw_write_error(target, e);
@@ -148,6 +186,11 @@ void write_file_atomically(const std::filesystem::path& target, const std::strin
     if (::close(fd) != 0 && !e) e = errno;
     if (e) throw_write_error(target, e);
   });
+}
+
+void remove_temporaries_in_flight() noexcept {
+  for (InFlight& f : in_flight)
+    if (f.state.load() == 2) ::unlink(f.name);
 }
 
 std::string read_text_file(const std::filesystem::path& path) {

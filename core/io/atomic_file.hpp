@@ -2,7 +2,9 @@
 // over the target. A failure at any step leaves the previous file untouched.
 //
 // The temporary file is ".NAME.tmp<pid>-<n>" (plus the target's extension for writers that choose
-// their format by it). A process killed while writing (SIGKILL, or SIGXFSZ where it is not
+// their format by it). While it is being written its name is kept in a fixed table that a signal
+// handler may read (remove_temporaries_in_flight), so a process stopped by SIGTERM or SIGINT
+// removes it before it dies. A process killed while writing (SIGKILL, or SIGXFSZ where it is not
 // ignored) cannot remove its own; every later write to the same target removes the temporary
 // files of that target whose process is gone.
 #pragma once
@@ -28,6 +30,11 @@ void write_atomically_via(const std::filesystem::path& target,
 // Removes the temporary files left beside target by processes that no longer run; returns how
 // many. Called by every atomic write before it starts.
 int remove_stale_temporaries(const std::filesystem::path& target);
+
+// Unlinks every temporary file now being written by this process. Async-signal-safe (only
+// unlink(2) on names copied into static storage beforehand): meant for a handler of SIGTERM or
+// SIGINT, which then lets the signal end the process.
+void remove_temporaries_in_flight() noexcept;
 
 std::string read_text_file(const std::filesystem::path& path);  // throws DataError
 

@@ -138,7 +138,7 @@ void write_stl(const std::vector<SurfaceMesh>& meshes, std::FILE* f) {
 
 }  // namespace
 
-MeshFormat mesh_format_for(const std::filesystem::path& path) {
+std::optional<MeshFormat> find_mesh_format(const std::filesystem::path& path) {
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return std::tolower(c); });
@@ -146,6 +146,12 @@ MeshFormat mesh_format_for(const std::filesystem::path& path) {
   if (ext == ".ply") return MeshFormat::Ply;
   if (ext == ".off") return MeshFormat::Off;
   if (ext == ".stl") return MeshFormat::Stl;
+  return std::nullopt;
+}
+
+MeshFormat mesh_format_for(const std::filesystem::path& path) {
+  if (const auto f = find_mesh_format(path)) return *f;
+  const std::string ext = path.extension().string();
   throw DataError(path.string(), "",
                   "unknown mesh format \"" + ext + "\" (use .obj, .ply, .off or .stl)");
 }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,8 @@ enum class MeshFormat { Obj, Ply, Off, Stl };
 
 // From the file extension; throws DataError for an unknown one.
 MeshFormat mesh_format_for(const std::filesystem::path& path);
+// The same, nullopt for a name that is none of them.
+std::optional<MeshFormat> find_mesh_format(const std::filesystem::path& path);
 
 // Throws DataError on failure; the previous file is left intact. Every sample is checked first
 // (check_finite): a bad one is reported with `source` (the input file; the target if empty), the

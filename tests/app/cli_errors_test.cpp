@@ -115,8 +115,9 @@ TEST(CliErrors, UnreadableFileAndWrongUsage) {
   CliResult r = cli({"analyze", (dir / "missing.json").string()});
   EXPECT_EQ(r.code, kExitBadInput);
   EXPECT_NE(r.err.find("missing.json"), std::string::npos);
+  // A FILE that is neither .json nor .gbp: the command line alone shows it (docs/cli.md).
   r = cli({"analyze", dir.file("x.txt", "hello").string()});
-  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_EQ(r.code, kExitUsage);
   EXPECT_EQ(cli({"frobnicate"}).code, kExitUsage);
   EXPECT_EQ(cli({"analyze"}).code, kExitUsage);
   EXPECT_EQ(cli({"analyze", "a.json", "--density", "0"}).code, kExitUsage);

@@ -7,11 +7,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <thread>
 
 #include "cli_test_util.hpp"
 #include "core/math/vec.hpp"
@@ -38,15 +36,6 @@ Ran run_binary(const std::string& args) {
 
 std::size_t lines(const std::string& s) {
   return std::count(s.begin(), s.end(), '\n');
-}
-
-// Every point scaled by s: [x, y, z] arrays under "vertices", "handles" and "points".
-nlohmann::json scaled(nlohmann::json j, double s) {
-  if (j.is_array() && j.size() == 3 && j[0].is_number() && j[1].is_number() && j[2].is_number())
-    return {j[0].get<double>() * s, j[1].get<double>() * s, j[2].get<double>() * s};
-  if (j.is_array() || j.is_object())
-    for (auto& v : j) v = scaled(v, s);
-  return j;
 }
 
 std::vector<Vec3> obj_normals(const std::string& obj) {
@@ -249,23 +238,11 @@ TEST(HostileCli, AWriterKilledMidWriteLeavesNothingAfterTheNextWrite) {
   TempDir dir;
   const auto target = dir / "out.ply";
   // A big export, killed as soon as its temporary file appears.
-  const pid_t child = fork();
-  if (child == 0) {
-    execl(PATCHLAB_BINARY, PATCHLAB_BINARY, "export", (kAssets + "default.json").c_str(), "-o",
-          target.c_str(), "--density", "200", static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  bool seen = false;
-  // Up to 5 minutes: the sanitizer build evaluates slowly before it starts writing.
-  for (int i = 0; i < 30000 && !seen; ++i) {
-    for (const auto& e : std::filesystem::directory_iterator(dir.operator/("")))
-      seen = seen || e.path().filename().string().rfind(".out.ply.tmp", 0) == 0;
-    if (!seen) std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  kill(child, SIGKILL);
+  const SlowWriter w = start_slow_export(target);
+  kill(w.pid, SIGKILL);
   int status = 0;
-  waitpid(child, &status, 0);
-  ASSERT_TRUE(seen) << "the export never started writing";
+  waitpid(w.pid, &status, 0);
+  ASSERT_TRUE(w.writing) << "the export never started writing";
   ASSERT_FALSE(std::filesystem::exists(target));
   std::size_t left = 0;
   for (const auto& e : std::filesystem::directory_iterator(dir.operator/(""))) left += 1, (void)e;

@@ -57,6 +57,7 @@ void bench_catmull_clark(const Options& options);
 void bench_cad(const Options& options);
 void bench_cad_ngon(const Options& options);
 void bench_curve(const Options& options);
+void bench_curve_scale(const Options& options);
 void bench_grains(const Options& options);
 void bench_schemes(const Options& options);
 

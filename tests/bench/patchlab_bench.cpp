@@ -1,7 +1,7 @@
 // The benchmark program: prints "figure NAME VALUE UNIT" lines. Run without arguments for real
 // figures (Release build), with --quick for a seconds-long smoke run, with --grains for the sweep
 // that chose the parallel grains, with --only NAME,... for some of the benchmarks (bezier, gb,
-// gb_face, interior, engine, catmull_clark, cad, cad_ngon, curve).
+// gb_face, interior, engine, catmull_clark, cad, cad_ngon, curve, curve_scale).
 #include <oneapi/tbb/info.h>
 
 #include <cstring>
@@ -23,7 +23,7 @@ int main(int argc, char** argv) {
       std::fprintf(
           stderr,
           "usage: patchlab_bench [--quick] [--grains] [--only bezier,gb,gb_face,interior,engine,"
-          "catmull_clark,cad,cad_ngon,curve,schemes]\n");
+          "catmull_clark,cad,cad_ngon,curve,curve_scale,schemes]\n");
       return 2;
     }
   }
@@ -46,6 +46,7 @@ int main(int argc, char** argv) {
   run("cad", pl::bench::bench_cad);
   run("cad_ngon", pl::bench::bench_cad_ngon);
   run("curve", pl::bench::bench_curve);
+  run("curve_scale", pl::bench::bench_curve_scale);
   run("schemes", pl::bench::bench_schemes);
   return 0;
 }

@@ -8,14 +8,6 @@
 namespace pl::test {
 namespace {
 
-nlohmann::json scaled(nlohmann::json j, double s) {
-  if (j.is_array() && j.size() == 3 && j[0].is_number() && j[1].is_number() && j[2].is_number())
-    return {j[0].get<double>() * s, j[1].get<double>() * s, j[2].get<double>() * s};
-  if (j.is_array() || j.is_object())
-    for (auto& v : j) v = scaled(v, s);
-  return j;
-}
-
 TEST(HostileRender, NonFiniteSamplesAreRefusedNamingPatchAndParameter) {
   TempDir dir;
   // The G2 pair-join construction squares lengths: at scale 1e150 its points overflow.
