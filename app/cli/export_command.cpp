@@ -2,7 +2,6 @@
 #include <cmath>
 
 #include "app/cli/arguments.hpp"
-#include "app/cli/cad_scale.hpp"
 #include "app/cli/checked_scene.hpp"
 #include "app/cli/cli.hpp"
 #include "app/cli/commands.hpp"
@@ -30,7 +29,7 @@ double tolerance_option(const std::string& v) {
 
 // STEP / IGES: B-spline faces through OpenCASCADE (core/cad/cad_export.hpp), after the checks
 // every command runs (at the default density: what `analyze FILE` refuses is refused here with
-// the same message) and the scale range of the CAD writers.
+// the same message); the CAD writers check their own size range and work bounds.
 int export_cad_file(const Arguments& a, const std::string& target, std::ostream& out) {
   if (a.value("--density")) throw UsageError("--density applies to mesh output only");
   CadExportOptions options;
@@ -44,8 +43,6 @@ int export_cad_file(const Arguments& a, const std::string& target, std::ostream&
   const int density = std::max(1, largest_density_within(scene, kDefaultDensity));
   TessellationCache cache;
   evaluate_checked(scene, density, options.scheme, cache, options.source);
-  // What every command accepts, then the CAD writers' own range.
-  check_cad_scale(scene, options.source);
   ProgressLine::set_stage("fitting and writing " + printable(target));
   out << cad_report_text(export_cad(scene, target, options));
   return kExitOk;
