@@ -25,11 +25,15 @@ bool follow(PatchEvaluator& ev, const Patch& target, std::size_t& moved) {
   if (current.type() != target.type() || current.size() != target.size() ||
       current.domain().key() != target.domain().key())
     return false;
-  // Ribbon patches of two schemes (or twist estimates) share their type, points and domain but
-  // not their basis: a face switched from one such scheme to another is evaluated afresh.
+  // Ribbon patches of two schemes (or twist estimates, or midpoint settings: the central point
+  // is solved from the points with the fullness as a coefficient) share their type, points and
+  // domain but not their basis: such a face is evaluated afresh.
   const auto* a = dynamic_cast<const RibbonPatch*>(&current);
   const auto* b = dynamic_cast<const RibbonPatch*>(&target);
-  if (a && b && (a->scheme() != b->scheme() || a->options().twists != b->options().twists))
+  if (a && b &&
+      (a->scheme() != b->scheme() || a->options().twists != b->options().twists ||
+       a->options().fullness != b->options().fullness ||
+       a->options().midpoint.has_value() != b->options().midpoint.has_value()))
     return false;
   std::vector<PatchEvaluator::PointMove> moves;
   for (std::size_t k = 0; k < target.size(); ++k)
