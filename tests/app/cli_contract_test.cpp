@@ -83,8 +83,7 @@ TEST(CliContract, CadExportStatesItsScaleRangeInShortNumbers) {
       const auto out = dir / ("s." + ext);
       const CliResult r = cli({"export", f.string(), "-o", out.string()});
       EXPECT_EQ(r.code, kExitBadInput) << s << " " << ext;
-      EXPECT_NE(r.err.find("is outside the range STEP and IGES export supports"),
-                std::string::npos)
+      EXPECT_NE(r.err.find("is outside the range STEP and IGES export supports"), std::string::npos)
           << r.err;
       // After the file's name (its temporary directory has digits): a 100-digit number before.
       EXPECT_LE(longest_digit_run(r.err.substr(r.err.find("s.json"))), 4u) << r.err;
