@@ -9,10 +9,11 @@ namespace pl {
 
 SceneSurfaces evaluate_checked(const Scene& scene, int density, std::optional<FaceScheme> scheme,
                                TessellationCache& cache, const std::string& file,
-                               std::vector<CurveReport>* curve_reports) {
+                               std::vector<CurveReport>* curve_reports,
+                               const std::shared_ptr<SampleBufferPool>& pool) {
   check_work_limits(scene, density, file);
   ProgressLine::set_stage("evaluating the surfaces");
-  SceneSurfaces surfaces = evaluate_scene(scene, density, scheme, cache, file);
+  SceneSurfaces surfaces = evaluate_scene(scene, density, scheme, cache, file, pool);
   for (const SceneSurface& s : surfaces.surfaces) check_finite(*s.evaluator, s.name, file);
   ProgressLine::set_stage("evaluating the curves");
   for (std::size_t i = 0; i < scene.curves.size(); ++i) {

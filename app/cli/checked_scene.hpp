@@ -20,9 +20,11 @@ inline constexpr int kDefaultDensity = 32;
 // The scene's surfaces evaluated at the density, each checked finite, and its free curves
 // checked finite at `density` samples per span. Throws DataError(file, ...) on the first refusal.
 // With `curve_reports`, the curves' analyze figures are made from the same samples (one report
-// per curve, in order), so `analyze` evaluates each curve once.
+// per curve, in order), so `analyze` evaluates each curve once. With a pool, the surfaces' sample
+// storage comes from it and goes back to it (evaluate_scene).
 SceneSurfaces evaluate_checked(const Scene& scene, int density, std::optional<FaceScheme> scheme,
                                TessellationCache& cache, const std::string& file,
-                               std::vector<CurveReport>* curve_reports = nullptr);
+                               std::vector<CurveReport>* curve_reports = nullptr,
+                               const std::shared_ptr<SampleBufferPool>& pool = nullptr);
 
 }  // namespace pl

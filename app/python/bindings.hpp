@@ -21,12 +21,15 @@ namespace py = pybind11;
 
 // A scene and the file it came from: every message about it names that file, as the CLI's do.
 // The tessellations of the densities it was evaluated at are kept for its next evaluations
-// (shared by its copies: they have the same domains).
+// (shared by its copies: they have the same domains), and so is the sample storage of results
+// Python has dropped: evaluating again writes into it instead of mapping and zeroing new memory
+// (core/eval/sample_buffer_pool.hpp), as PatchEvaluator::evaluate_all writes into its own.
 struct PyScene {
   PyScene(Scene s, std::string from) : scene(std::move(s)), source(std::move(from)) {}
   Scene scene;
   std::string source;
   std::shared_ptr<TessellationCache> tessellations = std::make_shared<TessellationCache>();
+  std::shared_ptr<SampleBufferPool> sample_buffers = std::make_shared<SampleBufferPool>();
 };
 
 // The samples of one surface of an evaluated scene. Its arrays are views of the evaluator's

@@ -2,11 +2,10 @@
 // allocated uninitialised and filled in parallel (oneTBB) by the patch's batched evaluation and
 // the batched differential geometry, the loops of PatchEvaluator::evaluate_all; the returned
 // arrays are views of those two buffers.
-#include <atomic>
 #include <cmath>
 
 #include "app/python/bindings.hpp"
-#include "core/base/parallel_for.hpp"
+#include "core/base/parallel_find.hpp"
 
 namespace pl::python {
 
@@ -83,18 +82,12 @@ py::dict evaluate_points(const PySamples& s,
     extent = std::max(extent, glm::length(corners.back() - corners.front()));
   }
   // The first point outside the domain (or not finite), found in parallel.
-  std::atomic<std::size_t> first_bad = n;
   const double tol = 1e-12 * std::max(extent, 1.0);
+  std::size_t first_bad = n;
   {
     py::gil_scoped_release release;
-    parallel_chunks(n, 8192, [&](std::size_t b, std::size_t e) {
-      for (std::size_t i = b; i < e; ++i)
-        if (!std::isfinite(xs[i].x) || !std::isfinite(xs[i].y) || !in_domain(corners, xs[i], tol)) {
-          std::size_t seen = first_bad.load();
-          while (i < seen && !first_bad.compare_exchange_weak(seen, i)) {
-          }
-          return;
-        }
+    first_bad = parallel_find_first(n, 8192, [&](std::size_t i) {
+      return !std::isfinite(xs[i].x) || !std::isfinite(xs[i].y) || !in_domain(corners, xs[i], tol);
     });
   }
   if (const std::size_t i = first_bad; i < n)

@@ -25,7 +25,8 @@ std::vector<PySamples> evaluate(const PyScene& s, int density,
   SceneSurfaces surfaces;
   {
     py::gil_scoped_release release;
-    surfaces = evaluate_checked(s.scene, d, fill, *s.tessellations, s.source);
+    surfaces =
+        evaluate_checked(s.scene, d, fill, *s.tessellations, s.source, nullptr, s.sample_buffers);
   }
   std::vector<PySamples> out;
   out.reserve(surfaces.surfaces.size());

@@ -36,16 +36,22 @@ inline void axpy(SurfaceJet& s, const Vec3& d, const Jet& w) {
 
 PatchEvaluator::PatchEvaluator(std::shared_ptr<Patch> patch,
                                std::shared_ptr<const Tessellation> tessellation,
-                               SampleStorage storage)
-    : patch_(std::move(patch)), tessellation_(std::move(tessellation)), storage_(storage) {
+                               SampleStorage storage, std::shared_ptr<SampleBufferPool> pool)
+    : patch_(std::move(patch)),
+      tessellation_(std::move(tessellation)),
+      storage_(storage),
+      pool_(std::move(pool)) {
   assert(patch_ && tessellation_);
   const std::size_t n = tessellation_->points.size();
-  if (storage_ == SampleStorage::Jets)
-    jets_.resize(n);
-  else
-    positions_.resize(n);
-  geometry_.resize(n);
-  evaluate_all();
+  SampleBuffers b = pool_ ? pool_->take(n, storage_) : SampleBuffers::fresh(n, storage_);
+  jets_ = std::move(b.jets);
+  positions_ = std::move(b.positions);
+  geometry_ = std::move(b.geometry);
+  evaluate_all();  // overwrites every sample: kept buffers hold another evaluator's values
+}
+
+PatchEvaluator::~PatchEvaluator() {
+  if (pool_) pool_->give({std::move(jets_), std::move(positions_), std::move(geometry_)});
 }
 
 namespace {

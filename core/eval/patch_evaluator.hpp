@@ -12,27 +12,23 @@
 #include <vector>
 
 #include "core/domain/tessellation.hpp"
+#include "core/eval/sample_buffer_pool.hpp"
 #include "core/geometry/differential_geometry.hpp"
 #include "core/patch/patch.hpp"
 
 namespace pl {
 
-// What an evaluator keeps of each sample.
-enum class SampleStorage {
-  // The surface jet (position and first and second derivatives, 144 bytes) and the geometry:
-  // a control-point move is an axpy with the point's influence column (a drag's view).
-  Jets,
-  // The position and the geometry only (88 instead of 208 bytes): what drawing and analysis
-  // read. A control-point move evaluates the patch again (a view at rest, which a drag's release
-  // moves once).
-  Compact,
-};
-
 class PatchEvaluator {
  public:
-  // Evaluates every sample at once.
+  // Evaluates every sample at once. With a pool, the per-sample arrays are taken from it (the
+  // storage of an evaluator that is gone, when one of this size is kept) and given back to it
+  // when this evaluator goes.
   PatchEvaluator(std::shared_ptr<Patch> patch, std::shared_ptr<const Tessellation> tessellation,
-                 SampleStorage storage = SampleStorage::Jets);
+                 SampleStorage storage = SampleStorage::Jets,
+                 std::shared_ptr<SampleBufferPool> pool = nullptr);
+  ~PatchEvaluator();
+  PatchEvaluator(const PatchEvaluator&) = delete;
+  PatchEvaluator& operator=(const PatchEvaluator&) = delete;
 
   const Patch& patch() const { return *patch_; }
   const Tessellation& tessellation() const { return *tessellation_; }
@@ -142,9 +138,10 @@ class PatchEvaluator {
   std::shared_ptr<Patch> patch_;
   std::shared_ptr<const Tessellation> tessellation_;
   SampleStorage storage_;
-  std::vector<SurfaceJet> jets_;     // Jets storage
-  std::vector<Vec3> positions_;      // Compact storage
-  std::vector<uint32_t> nonfinite_;  // Compact storage: samples with a non-finite jet
+  std::shared_ptr<SampleBufferPool> pool_;  // where the arrays below go back to, or null
+  std::vector<SurfaceJet> jets_;            // Jets storage
+  std::vector<Vec3> positions_;             // Compact storage
+  std::vector<uint32_t> nonfinite_;         // Compact storage: samples with a non-finite jet
   std::vector<SurfaceGeometry> geometry_;
   std::vector<Column> columns_;
   JetArray spare_;  // sample_count() entries, or empty

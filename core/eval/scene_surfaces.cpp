@@ -3,7 +3,8 @@
 namespace pl {
 
 SceneSurfaces evaluate_scene(const Scene& scene, int density, std::optional<FaceScheme> scheme,
-                             TessellationCache& cache, const std::string& source) {
+                             TessellationCache& cache, const std::string& source,
+                             const std::shared_ptr<SampleBufferPool>& pool) {
   SceneSurfaces out;
   if (scene.network) {
     const NetworkTopology topo = validate_network(*scene.network, source);
@@ -16,7 +17,8 @@ SceneSurfaces evaluate_scene(const Scene& scene, int density, std::optional<Face
       s.face = fp.face;
       s.patch_side = fp.patch_side;
       auto tess = cache.get(fp.patch->domain(), density);
-      s.evaluator = std::make_unique<PatchEvaluator>(std::move(fp.patch), std::move(tess));
+      s.evaluator = std::make_unique<PatchEvaluator>(std::move(fp.patch), std::move(tess),
+                                                     SampleStorage::Jets, pool);
       out.surfaces.push_back(std::move(s));
     }
     out.shared_edges = shared_edges_of(topo, out.surfaces);
@@ -30,7 +32,8 @@ SceneSurfaces evaluate_scene(const Scene& scene, int density, std::optional<Face
       s.name = pieces.size() == 1 ? name : name + "." + std::to_string(k);
       s.patch = static_cast<int>(i);
       auto tess = cache.get(pieces[k]->domain(), density);
-      s.evaluator = std::make_unique<PatchEvaluator>(pieces[k], std::move(tess));
+      s.evaluator =
+          std::make_unique<PatchEvaluator>(pieces[k], std::move(tess), SampleStorage::Jets, pool);
       out.surfaces.push_back(std::move(s));
     }
   }

@@ -42,8 +42,10 @@ std::vector<SharedEdge> shared_edges_of(const NetworkTopology& topology,
 // The surfaces a scene patch is drawn as: its surface_pieces(), or the patch itself.
 std::vector<std::shared_ptr<Patch>> surface_pieces_of(const Patch& patch);
 
-// Throws DataError for data it cannot evaluate. density >= 1.
+// Throws DataError for data it cannot evaluate. density >= 1. With a pool, the evaluators take
+// their sample storage from it and give it back when they go (core/eval/sample_buffer_pool.hpp).
 SceneSurfaces evaluate_scene(const Scene& scene, int density, std::optional<FaceScheme> scheme,
-                             TessellationCache& cache, const std::string& source);
+                             TessellationCache& cache, const std::string& source,
+                             const std::shared_ptr<SampleBufferPool>& pool = nullptr);
 
 }  // namespace pl

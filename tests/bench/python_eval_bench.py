@@ -23,7 +23,8 @@ the machine may be shared). Prints "figure NAME VALUE UNIT" lines:
                                sides alternating run by run
 
 The two sides of each ratio alternate call by call, so both see the same background load; the
-figures are medians. The scene keeps its tessellation between evaluations, as any Scene does.
+figures are medians. The scene keeps its tessellation between evaluations, and the storage of
+the results the loop drops (evaluated into again), as any Scene does.
 Usage: python_eval_bench.py [--quick] [--cpp-bench BUILD/tests/patchlab_bench]
   --quick      small sizes, a few repeats: proves the script works (figures not meaningful)
   --cpp-bench  also runs `patchlab_bench --only gb` and prints its figures with the ratios of

@@ -192,3 +192,40 @@ def test_evaluate_at_fills_an_earlier_result_again():
                 {k: np.array(v) for k, v in fresh.items()}):
         with pytest.raises(ValueError):
             s.evaluate_at(uv, out=out)
+
+
+def test_evaluating_again_reuses_dropped_storage_only():
+    """Scene.evaluate writes into the storage of results Python has dropped (no new memory), never
+    into that of results still held; what it writes equals a fresh scene's evaluation."""
+    scene = patchlab.load(ASSETS / "gb-hole-filling.json")
+    fields = ("positions", "su", "svv", "normals", "mean_curvature", "k_min")
+
+    def copies(result):
+        return [{name: np.array(getattr(s, name)) for name in fields} for s in result]
+
+    def assert_values(result, values):
+        assert len(result) == len(values)
+        for s, kept in zip(result, values):
+            for name in fields:
+                assert np.array_equal(getattr(s, name), kept[name]), (s.name, name)
+
+    def storage(result):
+        return {s.positions.__array_interface__["data"][0] for s in result}
+
+    gb = scene.evaluate(density=96, scheme="gb")
+    assert min(len(s) for s in gb) >= 4096  # large enough to be kept for reuse
+    gb_values, gb_storage = copies(gb), storage(gb)
+    gregory = scene.evaluate(density=96, scheme="gregory")  # gb is held: new storage
+    assert not gb_storage & storage(gregory)
+    assert_values(gb, gb_values)
+    gregory_values = copies(gregory)
+    assert any(not np.array_equal(a["positions"], b["positions"])
+               for a, b in zip(gb_values, gregory_values))
+    del gb
+    gc.collect()
+    again = scene.evaluate(density=96, scheme="gb")  # into the storage gb had
+    assert storage(again) == gb_storage
+    fresh = patchlab.load(ASSETS / "gb-hole-filling.json").evaluate(density=96, scheme="gb")
+    assert_values(again, copies(fresh))
+    assert_values(again, gb_values)
+    assert_values(gregory, gregory_values)  # untouched by the evaluation after it
