@@ -32,6 +32,7 @@ class JsonNode {
   // Arrays
   std::vector<JsonNode> items() const;
   std::vector<JsonNode> items(std::size_t exact_length) const;
+  std::size_t size() const;  // the length of the array (without a node per item)
   // Scalars
   double number() const;  // finite
   long long integer() const;
