@@ -40,7 +40,7 @@ std::string directory_of(const std::filesystem::path& target) {
 }
 
 // Writes all of content to fd; returns 0 or the errno of the failure.
-int write_all(int fd, const std::string& content) {
+int write_all(int fd, std::string_view content) {
   std::size_t done = 0;
   while (done < content.size()) {
     const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
@@ -179,12 +179,23 @@ void write_atomically_via(const std::filesystem::path& target,
 }
 
 void write_file_atomically(const std::filesystem::path& target, const std::string& content) {
+  write_text_atomically(target, [&](const TextSink& write) { write(content); });
+}
+
+void write_text_atomically(const std::filesystem::path& target,
+                           const std::function<void(const TextSink&)>& produce) {
   write_atomically_via(target, [&](const std::filesystem::path& tmp) {
     const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
     if (fd < 0) throw_write_error(target, errno);
-    int e = write_all(fd, content);
-    if (::close(fd) != 0 && !e) e = errno;
-    if (e) throw_write_error(target, e);
+    try {
+      produce([&](std::string_view piece) {
+        if (const int e = write_all(fd, piece)) throw_write_error(target, e);
+      });
+    } catch (...) {
+      ::close(fd);
+      throw;
+    }
+    if (::close(fd) != 0) throw_write_error(target, errno);
   });
 }
 

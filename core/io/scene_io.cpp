@@ -250,9 +250,8 @@ Ordered ordered_curve(const nlohmann::json& j) {
   return o;
 }
 
-}  // namespace
-
-std::string scene_to_json(const Scene& scene) {
+// The document but for its curves: with curves, an empty "curves" array holds their place.
+Ordered document_without_curves(const Scene& scene) {
   Ordered doc = Ordered::object();
   doc["patchlab"] = 1;
   if (!scene.name.empty()) doc["name"] = scene.name;
@@ -303,17 +302,55 @@ std::string scene_to_json(const Scene& scene) {
       doc["patches"].push_back(jp);
     }
   }
-  if (!scene.curves.empty()) {
-    doc["curves"] = Ordered::array();
-    for (const SceneCurve& c : scene.curves) doc["curves"].push_back(ordered_curve(curve_json(c)));
-  }
+  if (!scene.curves.empty()) doc["curves"] = Ordered::array();
   // The editor's view object as the reader kept it (its keys sorted: it is free-form).
   if (!scene.view_json.empty()) doc["view"] = Ordered::parse(scene.view_json);
-  return doc.dump(1) + "\n";
+  return doc;
+}
+
+// `text` (a value dumped at depth 0, indent 1) as it reads at `depth`: one more space per level
+// after each line break. A dumped value has no line break but the writer's (strings escape theirs).
+void append_at_depth(std::string& out, const std::string& text, int depth) {
+  for (const char ch : text) {
+    out += ch;
+    if (ch == '\n') out.append(depth, ' ');
+  }
+}
+
+// The text of the document (one space of indent a level, as nlohmann's dump(1) writes it), in
+// pieces: everything but the curves at once, then the curves one by one. A document of 400,000
+// curves built whole took half a gigabyte (a map per object, a node per number) before the first
+// byte was written.
+void write_scene_text(const Scene& scene, const TextSink& write) {
+  const std::string text = document_without_curves(scene).dump(1);
+  const std::string place = "\n \"curves\": []";  // only the top level has keys at one space
+  const std::size_t at = scene.curves.empty() ? std::string::npos : text.find(place);
+  if (at == std::string::npos) {
+    write(text + "\n");
+    return;
+  }
+  std::string piece = text.substr(0, at) + "\n \"curves\": [\n";
+  for (std::size_t i = 0; i < scene.curves.size(); ++i) {
+    piece += "  ";
+    append_at_depth(piece, ordered_curve(curve_json(scene.curves[i])).dump(1), 2);
+    piece += i + 1 < scene.curves.size() ? ",\n" : "\n";
+    if (piece.size() >= (1 << 20)) write(piece), piece.clear();
+  }
+  piece += " ]";
+  piece.append(text, at + place.size());
+  write(piece + "\n");
+}
+
+}  // namespace
+
+std::string scene_to_json(const Scene& scene) {
+  std::string out;
+  write_scene_text(scene, [&](std::string_view piece) { out += piece; });
+  return out;
 }
 
 void write_scene(const std::filesystem::path& path, const Scene& scene) {
-  write_file_atomically(path, scene_to_json(scene));
+  write_text_atomically(path, [&](const TextSink& write) { write_scene_text(scene, write); });
 }
 
 }  // namespace pl
