@@ -25,6 +25,7 @@ std::FILE* open_for_writing(const std::filesystem::path& tmp, const std::filesys
   errno = 0;
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
   if (!f) throw_write_error(target, errno);
+  std::setvbuf(f, nullptr, _IOFBF, 1 << 20);  // a few hundred writes for a large OBJ, not 50,000
   return f;
 }
 

@@ -5,10 +5,10 @@ namespace pl {
 CurvePolyline curve_polyline(const SceneCurve& curve, const std::string& name, int per_span) {
   CurvePolyline l;
   l.name = name;
-  const std::vector<double> ts = curve_sample_parameters(curve, per_span);
-  l.points.reserve(ts.size());
+  l.points.reserve(curve_span_count(curve) * per_span + 1);
   int span = -1;
-  for (double t : ts) l.points.push_back(evaluate(curve, t, span).p);
+  for_each_sample_parameter(curve, per_span,
+                            [&](double t) { l.points.push_back(evaluate(curve, t, span).p); });
   return l;
 }
 
