@@ -204,7 +204,8 @@ namespace {
 class TrackingBuilder {
  public:
   using json = nlohmann::json;
-  TrackingBuilder(json& root, const std::string& source) : root_(root), source_(source) {}
+  TrackingBuilder(json& root, const std::string& source, const StreamedArray* streamed)
+      : root_(root), source_(source), streamed_(streamed) {}
 
   bool null() { return value(nullptr); }
   bool boolean(bool v) { return value(v); }
@@ -266,8 +267,18 @@ class TrackingBuilder {
   template <class V>
   bool value(V&& v) {
     place(json(std::forward<V>(v)));
+    hand_over();
     advance();
     return true;
+  }
+  // An item just completed in the streamed array goes to its reader and out of the document.
+  void hand_over() {
+    if (!streamed_ || frames_.size() != 2 || frames_[0].array || !frames_[1].array ||
+        frames_[0].key != streamed_->key)
+      return;
+    auto& items = *open_.back()->get_ptr<json::array_t*>();
+    streamed_->read(items.back(), frames_[1].index);
+    items.pop_back();
   }
   bool open(json::value_t type, bool array) {
     open_.push_back(place(json(type)));
@@ -283,6 +294,7 @@ class TrackingBuilder {
   bool close() {
     open_.pop_back();
     frames_.pop_back();
+    hand_over();
     advance();
     return true;
   }
@@ -310,6 +322,7 @@ class TrackingBuilder {
   std::vector<json*> open_;  // the containers being filled, innermost last
   std::vector<Frame> frames_;
   json* slot_ = nullptr;
+  const StreamedArray* streamed_;
 };
 }  // namespace
 
@@ -328,6 +341,11 @@ std::string line_and_column(const std::string& text, std::size_t byte) {
 }  // namespace
 
 nlohmann::json parse_json(const std::string& text, const std::string& source) {
+  return parse_json(text, source, StreamedArray{});
+}
+
+nlohmann::json parse_json(const std::string& text, const std::string& source,
+                          const StreamedArray& streamed) {
   // The parser takes a NUL byte for the end of the input, so a value followed by one (and by
   // anything after it) was accepted. JSON text holds no raw NUL anywhere, not even in a string.
   if (const std::size_t nul = text.find('\0'); nul != std::string::npos)
@@ -335,7 +353,7 @@ nlohmann::json parse_json(const std::string& text, const std::string& source) {
                     "invalid JSON: a NUL byte (JSON text holds none; after the value only "
                     "white space may follow)");
   nlohmann::json root;
-  TrackingBuilder builder(root, source);
+  TrackingBuilder builder(root, source, streamed.read ? &streamed : nullptr);
   nlohmann::json::sax_parse(text, &builder);
   if (builder.syntax_byte_) {
     // Translate the byte offset into line and column for the message.

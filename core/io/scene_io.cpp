@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <set>
 #include <stdexcept>
 #include <utility>
@@ -160,10 +161,34 @@ ScenePatch read_patch(const JsonNode& node) {
   return sp;
 }
 
+// Item `index` of the scene's "curves".
+SceneCurve read_scene_curve(const nlohmann::json& item, std::size_t index,
+                            const std::string& source) {
+  const JsonNode node(item, source, "curves[" + std::to_string(index) + "]");
+  SceneCurve c = read_curve(node);
+  // A curve shrunk to a point has no tangent or curvature (a Hermite curve may start and end at
+  // one point: its tangents give it extent).
+  if (c.type != CurveType::Hermite) check_span(c.points, source, node.path() + ".points");
+  return c;
+}
+
 }  // namespace
 
 Scene parse_scene(const std::string& text, const std::string& source) {
-  const nlohmann::json doc = parse_json(text, source);
+  // The curves are read as the parser meets them, without their JSON kept; the first one that
+  // fails is reported when the curves' turn comes below, after the checks of everything before
+  // them (and after any syntax error), as when the whole document was read first.
+  std::vector<SceneCurve> curves;
+  std::exception_ptr curve_error;
+  const StreamedArray streamed{"curves", [&](const nlohmann::json& item, std::size_t index) {
+                                 if (curve_error) return;
+                                 try {
+                                   curves.push_back(read_scene_curve(item, index, source));
+                                 } catch (...) {
+                                   curve_error = std::current_exception();
+                                 }
+                               }};
+  const nlohmann::json doc = parse_json(text, source, streamed);
   const JsonNode root(doc, source);
   root.require_object();
   const JsonNode version = root.at("patchlab");
@@ -178,14 +203,11 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   }
   if (auto patches = root.find("patches"))
     for (const JsonNode& p : patches->items()) scene.patches.push_back(read_patch(p));
-  if (auto curves = root.find("curves"))
-    for (const JsonNode& c : curves->items()) {
-      scene.curves.push_back(read_curve(c));
-      // A curve shrunk to a point has no tangent or curvature (a Hermite curve may start and end
-      // at one point: its tangents give it extent).
-      if (scene.curves.back().type != CurveType::Hermite)
-        check_span(scene.curves.back().points, source, c.path() + ".points");
-    }
+  if (auto node = root.find("curves")) {
+    node->size();  // an array (anything else stayed in the document and is refused here)
+    if (curve_error) std::rethrow_exception(curve_error);
+    scene.curves = std::move(curves);
+  }
   check_spans(scene, source);
   if (auto view = root.find("view")) {
     view->require_object();
