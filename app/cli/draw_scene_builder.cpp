@@ -95,7 +95,8 @@ Polyline free_curve_polyline(const SceneCurve& c, int per_span) {
   Polyline l;
   const std::vector<double> ts = curve_sample_parameters(c, per_span);
   l.reserve(ts.size());
-  for (double t : ts) l.push_back(evaluate(c, t).p);
+  int span = -1;
+  for (double t : ts) l.push_back(evaluate(c, t, span).p);
   return l;
 }
 
@@ -126,9 +127,10 @@ std::vector<int> free_curves_samples_per_span(std::span<const SceneCurve> curves
 CurvatureComb free_curve_span_comb(const SceneCurve& c, std::pair<double, double> span,
                                    int comb_teeth) {
   const double a = span.first, len = span.second - span.first;
+  int knot_span = -1;
   return curvature_comb(
       [&](double u) {
-        CurvePoint p = evaluate(c, a + len * u);
+        CurvePoint p = evaluate(c, a + len * u, knot_span);
         p.d1 *= len, p.d2 *= len * len;  // derivatives in u (the comb needs their direction)
         return p;
       },

@@ -5,7 +5,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <limits>
-#include <unordered_map>
 
 #include "core/base/data_error.hpp"
 #include "core/curve/curvature.hpp"
@@ -45,13 +44,14 @@ const GaussLegendre& gauss() {
   return g;
 }
 
-// The length of the curve over [lo, hi] by one 16-point Gauss-Legendre rule.
-double piece_length(const SceneCurve& c, double lo, double hi) {
+// The length of the curve over [lo, hi] by one 16-point Gauss-Legendre rule; `span` carries the
+// knot span between evaluations (scene_curve.hpp).
+double piece_length(const SceneCurve& c, double lo, double hi, int& span) {
   const GaussLegendre& g = gauss();
   const double half = (hi - lo) / 2, mid = (hi + lo) / 2;
   double s = 0;
   for (int i = 0; i < kGaussPoints; ++i)
-    s += g.w[i] * glm::length(evaluate(c, mid + half * g.x[i]).d1);
+    s += g.w[i] * glm::length(evaluate(c, mid + half * g.x[i], span).d1);
   return half * s;
 }
 
@@ -63,13 +63,13 @@ constexpr int kMaxHalvings = 12;
 // point where |C'| is not smooth (a cusp, where it vanishes) go deep, so a span costs a few
 // dozen evaluations, not the thousands a uniform refinement of the whole span took there.
 double refined_length(const SceneCurve& c, double lo, double hi, double whole, double tol,
-                      int halvings) {
+                      int halvings, int& span) {
   const double mid = (lo + hi) / 2;
-  const double left = piece_length(c, lo, mid), right = piece_length(c, mid, hi);
+  const double left = piece_length(c, lo, mid, span), right = piece_length(c, mid, hi, span);
   if (std::abs(left + right - whole) <= tol || halvings == 0 || !std::isfinite(left + right))
     return left + right;
-  return refined_length(c, lo, mid, left, tol, halvings - 1) +
-         refined_length(c, mid, hi, right, tol, halvings - 1);
+  return refined_length(c, lo, mid, left, tol, halvings - 1, span) +
+         refined_length(c, mid, hi, right, tol, halvings - 1, span);
 }
 
 // A unit normal of the plane holding every control point, or zero if they are not in one plane
@@ -110,54 +110,95 @@ double curve_length(const SceneCurve& c) {
   for (const Vec3& q : own ? c.points : spline_form(c).points)
     largest = std::max({largest, std::abs(q.x), std::abs(q.y), std::abs(q.z)});
   const double rounding = 64 * std::numeric_limits<double>::epsilon() * curve_degree(c) * largest;
+  int span = -1;
   for (const auto& [a, b] : curve_spans(c)) {
-    const double whole = piece_length(c, a, b);
+    const double whole = piece_length(c, a, b, span);
     const double tol = std::max(1e-13 * std::abs(whole), rounding);
-    total += refined_length(c, a, b, whole, tol, kMaxHalvings);
+    total += refined_length(c, a, b, whole, tol, kMaxHalvings, span);
   }
   return total;
 }
 
 namespace {
 
-// A curve's samples, evaluated once for every figure taken from them.
-struct CurveSampling {
-  std::vector<double> t;
-  std::vector<CurvePoint> p;
+// What a curve's samples show, taken from each sample as it is evaluated. Kept, the samples of a
+// spline of 400,000 points (3.2 million at 8 per span) took 230 MB, written once and read back
+// from memory for every figure: the cost per sample grew with the curve.
+struct SampleFigures {
+  std::array<double, 2> curvature{std::numeric_limits<double>::infinity(), 0};
+  std::size_t nonfinite = 0;  // samples whose position or curvature is not finite
+  int inflections = 0;
 };
 
-CurveSampling sample_curve(const SceneCurve& c, int per_span) {
-  CurveSampling s;
-  s.t = curve_sample_parameters(c, per_span);
-  s.p.reserve(s.t.size());
-  for (double t : s.t) s.p.push_back(evaluate(c, t));
-  return s;
+bool finite(const Vec3& v) {
+  return std::isfinite(v.x + v.y + v.z);
 }
 
-int inflections_of(const SceneCurve& c, const CurveSampling& s) {
-  const Vec3 n = plane_normal(spline_form(c).points);
-  if (n == Vec3(0)) return 0;
+// The samples at per_span per span; `bad(t)` is called at the first one whose position,
+// derivatives or curvature are not finite (it may throw). The figures are taken only if asked.
+template <class Bad>
+SampleFigures sample_figures(const SceneCurve& c, int per_span, bool figures, Bad&& bad) {
+  SampleFigures r;
+  // Inflections: the signed curvature in the curve's plane (none if it has no plane), whose sign
+  // changes are counted once the largest |k| is known.
+  const Vec3 n = figures ? plane_normal(spline_form(c).points) : Vec3(0);
   std::vector<double> k;
-  k.reserve(s.p.size());
+  if (n != Vec3(0)) k.reserve(curve_span_count(c) * per_span + 1);
   double kmax = 0;
-  for (const CurvePoint& p : s.p) {
+  bool seen_bad = false;
+  int span = -1;
+  for_each_sample_parameter(c, per_span, [&](double t) {
+    const CurvePoint p = evaluate(c, t, span);
+    const double kappa = curve_curvature(p);
+    if (!seen_bad && (!finite(p.p) || !finite(p.d1) || !finite(p.d2) || !std::isfinite(kappa))) {
+      seen_bad = true;
+      bad(t);
+    }
+    if (!figures) return;
+    if (!std::isfinite(kappa) || !finite(p.p)) {
+      ++r.nonfinite;
+    } else {
+      r.curvature[0] = std::min(r.curvature[0], kappa);
+      r.curvature[1] = std::max(r.curvature[1], kappa);
+    }
+    if (n == Vec3(0)) return;
     const double speed = glm::length(p.d1);
     k.push_back(speed == 0 ? 0.0 : glm::dot(glm::cross(p.d1, p.d2), n) / (speed * speed * speed));
     if (std::isfinite(k.back())) kmax = std::max(kmax, std::abs(k.back()));
-  }
+  });
+  if (r.curvature[0] > r.curvature[1]) r.curvature = {0, 0};
   // Curvature below this is rounding noise of a straight piece: no sign there.
   const double zero = 1e-9 * kmax;
-  int changes = 0, sign = 0;
+  int sign = 0;
   for (double x : k) {
     if (!std::isfinite(x) || std::abs(x) <= zero) continue;
     const int sx = x > 0 ? 1 : -1;
-    if (sign != 0 && sx != sign) ++changes;
+    if (sign != 0 && sx != sign) ++r.inflections;
     sign = sx;
   }
-  return changes;
+  return r;
 }
 
-CurveReport report_of(const SceneCurve& c, const std::string& name, const CurveSampling& s,
+SampleFigures unchecked_figures(const SceneCurve& c, int per_span) {
+  return sample_figures(c, per_span, true, [](double) {});
+}
+
+// check_curve_finite's DataError for the first sample that is not finite, at parameter t.
+[[noreturn]] void throw_not_finite(double t, std::size_t index, const std::string& source) {
+  char at[32];
+  std::snprintf(at, sizeof at, "%.9g", t);  // short, even for a knot of 1e153
+  throw DataError(source, "curves[" + std::to_string(index) + "]",
+                  "the curve is not finite at t = " + std::string(at) +
+                      " (its numbers overflow when evaluated)");
+}
+
+SampleFigures checked_figures(const SceneCurve& c, int per_span, bool figures, std::size_t index,
+                              const std::string& source) {
+  return sample_figures(c, per_span, figures,
+                        [&](double t) { throw_not_finite(t, index, source); });
+}
+
+CurveReport report_of(const SceneCurve& c, const std::string& name, const SampleFigures& f,
                       double length) {
   CurveReport r;
   r.name = name;
@@ -166,35 +207,10 @@ CurveReport report_of(const SceneCurve& c, const std::string& name, const CurveS
   r.control_points = static_cast<int>(c.points.size());
   r.spans = static_cast<int>(curve_span_count(c));
   r.length = length;
-  r.curvature = {std::numeric_limits<double>::infinity(), 0};
-  for (const CurvePoint& p : s.p) {
-    const double k = curve_curvature(p);
-    if (!std::isfinite(k) || !std::isfinite(p.p.x + p.p.y + p.p.z)) {
-      ++r.nonfinite_samples;
-      continue;
-    }
-    r.curvature[0] = std::min(r.curvature[0], k);
-    r.curvature[1] = std::max(r.curvature[1], k);
-  }
-  if (r.curvature[0] > r.curvature[1]) r.curvature = {0, 0};
-  r.inflections = inflections_of(c, s);
+  r.curvature = f.curvature;
+  r.nonfinite_samples = f.nonfinite;
+  r.inflections = f.inflections;
   return r;
-}
-
-// Throw check_curve_finite's DataErrors: for the first sample that is not finite, for a length
-// that is not.
-void check_samples(const CurveSampling& s, std::size_t index, const std::string& source) {
-  auto finite = [](const Vec3& v) { return std::isfinite(v.x + v.y + v.z); };
-  for (std::size_t k = 0; k < s.p.size(); ++k) {
-    const CurvePoint& p = s.p[k];
-    if (!finite(p.p) || !finite(p.d1) || !finite(p.d2) || !std::isfinite(curve_curvature(p))) {
-      char t[32];
-      std::snprintf(t, sizeof t, "%.9g", s.t[k]);  // short, even for a knot of 1e153
-      throw DataError(source, "curves[" + std::to_string(index) + "]",
-                      "the curve is not finite at t = " + std::string(t) +
-                          " (its numbers overflow when evaluated)");
-    }
-  }
 }
 
 void check_length(double length, std::size_t index, const std::string& source) {
@@ -206,27 +222,26 @@ void check_length(double length, std::size_t index, const std::string& source) {
 }  // namespace
 
 int curve_inflections(const SceneCurve& c, int per_span) {
-  return inflections_of(c, sample_curve(c, per_span));
+  return unchecked_figures(c, per_span).inflections;
 }
 
 CurveReport analyze_curve(const SceneCurve& c, const std::string& name, int per_span) {
-  return report_of(c, name, sample_curve(c, per_span), curve_length(c));
+  return report_of(c, name, unchecked_figures(c, per_span), curve_length(c));
 }
 
 void check_curve_finite(const SceneCurve& c, std::size_t index, int per_span,
                         const std::string& source) {
   // The samples first: a curve whose samples overflow is named at the first such sample.
-  check_samples(sample_curve(c, per_span), index, source);
+  checked_figures(c, per_span, false, index, source);
   check_length(curve_length(c), index, source);
 }
 
 CurveReport checked_curve_report(const SceneCurve& c, std::size_t index, int per_span,
                                  const std::string& source) {
-  const CurveSampling s = sample_curve(c, per_span);
-  check_samples(s, index, source);
+  const SampleFigures f = checked_figures(c, per_span, true, index, source);
   const double length = curve_length(c);
   check_length(length, index, source);
-  return report_of(c, curve_name(c, index), s, length);
+  return report_of(c, curve_name(c, index), f, length);
 }
 
 Vec3 curvature_vector(const CurvePoint& c) {
@@ -305,34 +320,44 @@ std::vector<JointReport> curve_joints(std::span<const SceneCurve> curves) {
   const double cell = tol > 0 ? tol * (1 + 1e-6) : 1.0;
   // An end that is not finite meets no other (its figures would be NaN).
   auto finite = [](const Vec3& p) { return std::isfinite(p.x + p.y + p.z); };
+  using Cell = std::array<std::int64_t, 3>;
   auto cell_of = [&](const Vec3& p) {
-    std::array<std::int64_t, 3> k{};
+    Cell k{};
     for (int a = 0; a < 3; ++a)
       k[a] = static_cast<std::int64_t>(std::clamp(std::floor((p[a] - lo[a]) / cell), -1.0, 2e9));
     return k;
   };
-  struct CellHash {
-    std::size_t operator()(const std::array<std::int64_t, 3>& k) const {
-      return std::hash<std::int64_t>()(k[0] * 73856093 ^ k[1] * 19349663 ^ k[2] * 83492791);
-    }
+  // The ends sorted by cell (x, then y, then z). The ends of the three cells (x + dx, y + dy,
+  // z - 1 .. z + 1) are then one run of that order, and for each (dx, dy) the run's start only
+  // moves forward as the ends are visited in order: the sweep reads the array front to back. A
+  // hash map of the cells, looked up 27 times per end at scattered places, missed the cache on
+  // nearly every lookup once the ends of a large chain no longer fitted in it.
+  struct Placed {
+    Cell cell;
+    Vec3 p;
+    std::size_t end;
   };
-  std::unordered_map<std::array<std::int64_t, 3>, std::vector<std::size_t>, CellHash> grid;
-  grid.reserve(ends.size());
+  std::vector<Placed> placed;
+  placed.reserve(ends.size());
   for (std::size_t i = 0; i < ends.size(); ++i)
-    if (finite(ends[i].p.p)) grid[cell_of(ends[i].p.p)].push_back(i);
+    if (finite(ends[i].p.p)) placed.push_back({cell_of(ends[i].p.p), ends[i].p.p, i});
+  std::sort(placed.begin(), placed.end(), [](const Placed& a, const Placed& b) {
+    return a.cell != b.cell ? a.cell < b.cell : a.end < b.end;
+  });
   // The pairs (i, j), i < j, in the order a comparison of every pair would find them.
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  for (std::size_t i = 0; i < ends.size(); ++i) {
-    if (!finite(ends[i].p.p)) continue;
-    const auto k = cell_of(ends[i].p.p);
-    for (std::int64_t dx = -1; dx <= 1; ++dx)
-      for (std::int64_t dy = -1; dy <= 1; ++dy)
-        for (std::int64_t dz = -1; dz <= 1; ++dz) {
-          const auto it = grid.find({k[0] + dx, k[1] + dy, k[2] + dz});
-          if (it == grid.end()) continue;
-          for (std::size_t j : it->second)
-            if (j > i && glm::length(ends[i].p.p - ends[j].p.p) <= tol) pairs.emplace_back(i, j);
-        }
+  std::array<std::size_t, 9> run_start{};  // per (dx, dy): the first end not below its run
+  for (const Placed& e : placed) {
+    for (int q = 0; q < 9; ++q) {
+      const Cell first{e.cell[0] + q / 3 - 1, e.cell[1] + q % 3 - 1, e.cell[2] - 1};
+      const Cell last{first[0], first[1], e.cell[2] + 1};
+      std::size_t& t = run_start[q];
+      while (t < placed.size() && placed[t].cell < first) ++t;
+      for (std::size_t u = t; u < placed.size() && placed[u].cell <= last; ++u) {
+        const Placed& f = placed[u];
+        if (f.end > e.end && glm::length(e.p - f.p) <= tol) pairs.emplace_back(e.end, f.end);
+      }
+    }
   }
   std::sort(pairs.begin(), pairs.end());
   std::vector<JointReport> out;

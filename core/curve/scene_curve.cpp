@@ -132,6 +132,11 @@ SceneCurve curve_of_spline(const SplineCurve& s, std::string name) {
 }
 
 CurvePoint evaluate(const SceneCurve& c, double t) {
+  int span = -1;
+  return evaluate(c, t, span);
+}
+
+CurvePoint evaluate(const SceneCurve& c, double t, int& span) {
   switch (c.type) {
     case CurveType::Bezier: {
       // BezierCurve::evaluate's sums, on the scene's points and stack arrays: a curve evaluated
@@ -156,7 +161,7 @@ CurvePoint evaluate(const SceneCurve& c, double t) {
       return evaluate_spline(c.degree, c.knots, c.points,
                              c.type == CurveType::Nurbs ? std::span<const double>(c.weights)
                                                         : std::span<const double>(),
-                             t);
+                             t, span);
   }
 }
 
@@ -177,12 +182,8 @@ std::size_t curve_span_count(const SceneCurve& c) {
 
 std::vector<double> curve_sample_parameters(const SceneCurve& c, int per_span) {
   std::vector<double> ts;
-  const auto spans = curve_spans(c);
-  for (std::size_t s = 0; s < spans.size(); ++s) {
-    const auto [a, b] = spans[s];
-    for (int k = s == 0 ? 0 : 1; k <= per_span; ++k)
-      ts.push_back(k == per_span ? b : a + (b - a) * (double(k) / per_span));
-  }
+  ts.reserve(curve_span_count(c) * per_span + 1);
+  for_each_sample_parameter(c, per_span, [&](double t) { ts.push_back(t); });
   return ts;
 }
 

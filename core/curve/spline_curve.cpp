@@ -82,7 +82,14 @@ std::vector<std::pair<double, double>> spline_spans(const SplineCurve& c) {
 
 CurvePoint evaluate_spline(int p, std::span<const double> knots, std::span<const Vec3> points,
                            std::span<const double> weights, double t) {
-  const SplineBasis b = spline_basis(p, knots, points.size(), t);
+  int span = -1;
+  return evaluate_spline(p, knots, points, weights, t, span);
+}
+
+CurvePoint evaluate_spline(int p, std::span<const double> knots, std::span<const Vec3> points,
+                           std::span<const double> weights, double t, int& span) {
+  span = find_span(p, knots, points.size(), t, span);
+  const SplineBasis b = spline_basis_at(p, knots, span, t);
   Vec3 a0(0), a1(0), a2(0);
   double w0 = 0, w1 = 0, w2 = 0;
   for (int r = 0; r <= p; ++r) {

@@ -42,6 +42,11 @@ CurvePoint evaluate(const SplineCurve& c, double t);
 // The same on arrays held elsewhere (weights empty: polynomial).
 CurvePoint evaluate_spline(int degree, std::span<const double> knots, std::span<const Vec3> points,
                            std::span<const double> weights, double t);
+// The same, trying knot span `span` (one an earlier call left, or -1) and the next one before
+// searching the knots; `span` is left at the span used. Evaluations in increasing t, as samples
+// and quadrature points along a curve are made, then cost the same on any number of points.
+CurvePoint evaluate_spline(int degree, std::span<const double> knots, std::span<const Vec3> points,
+                           std::span<const double> weights, double t, int& span);
 
 // t inserted once (t_min < t < t_max, multiplicity stays <= degree + 1).
 SplineCurve knot_inserted(const SplineCurve& c, double t);

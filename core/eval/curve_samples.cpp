@@ -13,8 +13,10 @@ CurveSamples::CurveSamples(const SceneCurve& curve, int per_span)
   const std::size_t n = spline_.points.size();
   span_.resize(t_.size());
   basis_.resize(t_.size() * 3 * (p + 1));
+  int span = -1;  // the samples run in increasing t: each span is found from the last
   for (std::size_t k = 0; k < t_.size(); ++k) {
-    const SplineBasis b = spline_basis(p, spline_.knots, n, t_[k]);
+    span = find_span(p, spline_.knots, n, t_[k], span);
+    const SplineBasis b = spline_basis_at(p, spline_.knots, span, t_[k]);
     span_[k] = b.span;
     for (int r = 0; r <= p; ++r) {
       double* row = &basis_[(k * (p + 1) + r) * 3];
@@ -31,7 +33,10 @@ CurveSamples::CurveSamples(const SceneCurve& curve, int per_span)
 
 void CurveSamples::evaluate_all() {
   samples_.resize(t_.size());
-  for (std::size_t k = 0; k < t_.size(); ++k) samples_[k] = evaluate(spline_, t_[k]);
+  int span = -1;
+  for (std::size_t k = 0; k < t_.size(); ++k)
+    samples_[k] = evaluate_spline(spline_.degree, spline_.knots, spline_.points, spline_.weights,
+                                  t_[k], span);
 }
 
 std::pair<std::size_t, std::size_t> CurveSamples::move_point(std::size_t i, const Vec3& p) {

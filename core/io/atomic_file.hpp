@@ -13,12 +13,18 @@
 #include <functional>
 #include <ostream>
 #include <string>
+#include <string_view>
 
 namespace pl {
 
 // Throws DataError (source = target path, never the temporary file) naming the reason: no such
 // directory, permission denied, disk full, file too large, ...
 void write_file_atomically(const std::filesystem::path& target, const std::string& content);
+// The same for text made in pieces: `produce` hands each piece to the sink it is given, which
+// writes it (or throws write_file_atomically's DataError), so the whole text is never held.
+using TextSink = std::function<void(std::string_view)>;
+void write_text_atomically(const std::filesystem::path& target,
+                           const std::function<void(const TextSink&)>& produce);
 // For writers that stream: `produce` writes to a temporary file path; it is renamed on success.
 // `produce` reports its own failures with throw_write_error(target, errno).
 void write_atomically_via(const std::filesystem::path& target,

@@ -21,13 +21,12 @@ CurveType read_type(const JsonNode& node) {
 }
 
 std::vector<Vec3> read_points(const JsonNode& node, std::size_t at_least, std::size_t at_most) {
-  const auto items = node.items();
-  if (items.size() < at_least || items.size() > at_most)
+  const std::size_t n = node.size();
+  if (n < at_least || n > at_most)
     node.fail(at_least == at_most
-                  ? "expected " + std::to_string(at_least) + " points, got " +
-                        std::to_string(items.size())
+                  ? "expected " + std::to_string(at_least) + " points, got " + std::to_string(n)
                   : "expected " + std::to_string(at_least) + " to " + std::to_string(at_most) +
-                        " points, got " + std::to_string(items.size()));
+                        " points, got " + std::to_string(n));
   return node.points();
 }
 

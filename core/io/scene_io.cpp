@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <set>
 #include <stdexcept>
 #include <utility>
@@ -160,10 +161,34 @@ ScenePatch read_patch(const JsonNode& node) {
   return sp;
 }
 
+// Item `index` of the scene's "curves".
+SceneCurve read_scene_curve(const nlohmann::json& item, std::size_t index,
+                            const std::string& source) {
+  const JsonNode node(item, source, "curves[" + std::to_string(index) + "]");
+  SceneCurve c = read_curve(node);
+  // A curve shrunk to a point has no tangent or curvature (a Hermite curve may start and end at
+  // one point: its tangents give it extent).
+  if (c.type != CurveType::Hermite) check_span(c.points, source, node.path() + ".points");
+  return c;
+}
+
 }  // namespace
 
 Scene parse_scene(const std::string& text, const std::string& source) {
-  const nlohmann::json doc = parse_json(text, source);
+  // The curves are read as the parser meets them, without their JSON kept; the first one that
+  // fails is reported when the curves' turn comes below, after the checks of everything before
+  // them (and after any syntax error), as when the whole document was read first.
+  std::vector<SceneCurve> curves;
+  std::exception_ptr curve_error;
+  const StreamedArray streamed{"curves", [&](const nlohmann::json& item, std::size_t index) {
+                                 if (curve_error) return;
+                                 try {
+                                   curves.push_back(read_scene_curve(item, index, source));
+                                 } catch (...) {
+                                   curve_error = std::current_exception();
+                                 }
+                               }};
+  const nlohmann::json doc = parse_json(text, source, streamed);
   const JsonNode root(doc, source);
   root.require_object();
   const JsonNode version = root.at("patchlab");
@@ -178,14 +203,11 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   }
   if (auto patches = root.find("patches"))
     for (const JsonNode& p : patches->items()) scene.patches.push_back(read_patch(p));
-  if (auto curves = root.find("curves"))
-    for (const JsonNode& c : curves->items()) {
-      scene.curves.push_back(read_curve(c));
-      // A curve shrunk to a point has no tangent or curvature (a Hermite curve may start and end
-      // at one point: its tangents give it extent).
-      if (scene.curves.back().type != CurveType::Hermite)
-        check_span(scene.curves.back().points, source, c.path() + ".points");
-    }
+  if (auto node = root.find("curves")) {
+    node->size();  // an array (anything else stayed in the document and is refused here)
+    if (curve_error) std::rethrow_exception(curve_error);
+    scene.curves = std::move(curves);
+  }
   check_spans(scene, source);
   if (auto view = root.find("view")) {
     view->require_object();
@@ -242,17 +264,8 @@ Ordered ordered(const nlohmann::json& j) {
   return Ordered(j);
 }
 
-// A curve object in the order the format lists its keys (the samples' order).
-Ordered ordered_curve(const nlohmann::json& j) {
-  Ordered o = Ordered::object();
-  for (const char* key : {"type", "name", "degree", "points", "tangents", "knots", "weights"})
-    if (j.contains(key)) o[key] = Ordered(j.at(key));
-  return o;
-}
-
-}  // namespace
-
-std::string scene_to_json(const Scene& scene) {
+// The document but for its curves: with curves, an empty "curves" array holds their place.
+Ordered document_without_curves(const Scene& scene) {
   Ordered doc = Ordered::object();
   doc["patchlab"] = 1;
   if (!scene.name.empty()) doc["name"] = scene.name;
@@ -303,17 +316,78 @@ std::string scene_to_json(const Scene& scene) {
       doc["patches"].push_back(jp);
     }
   }
-  if (!scene.curves.empty()) {
-    doc["curves"] = Ordered::array();
-    for (const SceneCurve& c : scene.curves) doc["curves"].push_back(ordered_curve(curve_json(c)));
-  }
+  if (!scene.curves.empty()) doc["curves"] = Ordered::array();
   // The editor's view object as the reader kept it (its keys sorted: it is free-form).
   if (!scene.view_json.empty()) doc["view"] = Ordered::parse(scene.view_json);
-  return doc.dump(1) + "\n";
+  return doc;
+}
+
+// `text` (a value dumped at depth 0, indent 1) as it reads at `depth`: one more space per level
+// after each line break. A dumped value has no line break but the writer's (strings escape theirs).
+void append_at_depth(std::string& out, const std::string& text, int depth) {
+  out.reserve(out.size() + text.size() + depth * std::count(text.begin(), text.end(), '\n'));
+  for (const char ch : text) {
+    out += ch;
+    if (ch == '\n') out.append(depth, ' ');
+  }
+}
+
+// A curve object as dump(1) writes it at `depth`, its keys in the order the format lists them
+// (the samples' order), each value dumped straight from the codec's JSON: no ordered copy of an
+// array of 400,000 points.
+void append_curve(std::string& out, const nlohmann::json& j, int depth) {
+  out += '{';
+  bool first = true;
+  for (const char* key : {"type", "name", "degree", "points", "tangents", "knots", "weights"}) {
+    const auto it = j.find(key);
+    if (it == j.end()) continue;
+    out += first ? "\n" : ",\n";
+    first = false;
+    out.append(depth + 1, ' ');
+    out += '"';
+    out += key;
+    out += "\": ";
+    append_at_depth(out, it->dump(1), depth + 1);
+  }
+  out += '\n';
+  out.append(depth, ' ');
+  out += '}';
+}
+
+// The text of the document (one space of indent a level, as nlohmann's dump(1) writes it), in
+// pieces: everything but the curves at once, then the curves one by one. A document of 400,000
+// curves built whole took half a gigabyte (a map per object, a node per number) before the first
+// byte was written.
+void write_scene_text(const Scene& scene, const TextSink& write) {
+  const std::string text = document_without_curves(scene).dump(1);
+  const std::string place = "\n \"curves\": []";  // only the top level has keys at one space
+  const std::size_t at = scene.curves.empty() ? std::string::npos : text.find(place);
+  if (at == std::string::npos) {
+    write(text + "\n");
+    return;
+  }
+  std::string piece = text.substr(0, at) + "\n \"curves\": [\n";
+  for (std::size_t i = 0; i < scene.curves.size(); ++i) {
+    piece += "  ";
+    append_curve(piece, curve_json(scene.curves[i]), 2);
+    piece += i + 1 < scene.curves.size() ? ",\n" : "\n";
+    if (piece.size() >= (1 << 20)) write(piece), piece.clear();
+  }
+  piece += " ]";
+  piece.append(text, at + place.size());
+  write(piece + "\n");
+}
+
+}  // namespace
+
+std::string scene_to_json(const Scene& scene) {
+  std::string out;
+  write_scene_text(scene, [&](std::string_view piece) { out += piece; });
+  return out;
 }
 
 void write_scene(const std::filesystem::path& path, const Scene& scene) {
-  write_file_atomically(path, scene_to_json(scene));
+  write_text_atomically(path, [&](const TextSink& write) { write_scene_text(scene, write); });
 }
 
 }  // namespace pl

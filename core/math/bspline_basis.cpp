@@ -42,9 +42,22 @@ int find_span(int p, std::span<const double> U, std::size_t n, double t) {
   return i;
 }
 
+int find_span(int p, std::span<const double> U, std::size_t n, double t, int hint) {
+  // Where U[h] <= t < U[h + 1] the search above stops at h too (the first knot above t is
+  // U[h + 1], or the range ends there), and h is not an empty span.
+  const auto in = [&](int h) { return h >= p && h < int(n) && U[h] <= t && t < U[h + 1]; };
+  if (in(hint)) return hint;
+  if (in(hint + 1)) return hint + 1;
+  return find_span(p, U, n, t);
+}
+
 SplineBasis spline_basis(int p, std::span<const double> U, std::size_t n, double t) {
+  return spline_basis_at(p, U, find_span(p, U, n, t), t);
+}
+
+SplineBasis spline_basis_at(int p, std::span<const double> U, int span, double t) {
   SplineBasis b;
-  const int s = b.span = find_span(p, U, n, t);
+  const int s = b.span = span;
   // level[k][r] = N_{s-k+r, k}(t), r = 0..k: every degree up to p (derivatives need p-1, p-2).
   double level[kMaxSplineDegree + 1][kMaxSplineDegree + 1];
   level[0][0] = 1;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -72,6 +73,7 @@ void bench_curve_scale(const Options& options) {
   };
   const std::string out = (dir / "out").string();
   for (const Kind& kind : {Kind{"bspline", bspline_scene}, Kind{"bezier", bezier_scene}}) {
+    std::map<std::string, double> at_small;  // the density-8 figures of the small scene, by name
     for (const int n : {small, big}) {
       const std::string file =
           (dir / (std::string(kind.name) + std::to_string(n) + ".json")).string();
@@ -90,13 +92,26 @@ void bench_curve_scale(const Options& options) {
         std::vector<std::string> at8 = args;
         if (std::string(name) != "convert") at8.insert(at8.end(), {"--density", "8"});
         const std::string base = std::string("curve_") + name + "_ms_" + kind.name;
-        figure((base + "_" + tag + "_d8").c_str(), command_ms(n == big ? 1 : repeats, at8), "ms");
+        const double ms = command_ms(n == big ? 1 : repeats, at8);
+        figure((base + "_" + tag + "_d8").c_str(), ms, "ms");
+        // The scaling target: 10 times the points in at most 10 times the time.
+        if (n == small) at_small[name] = ms;
+        if (n == big && at_small[name] > 0)
+          figure((std::string("curve_") + name + "_ratio_" + kind.name + "_" + tag + "_over_" +
+                  tag_small)
+                     .c_str(),
+                 ms / at_small[name], "x");
         if (n == small) figure((base + "_" + tag).c_str(), command_ms(repeats, args), "ms");
       }
       // The two figures the scaling target names: the B-spline through analyze, at density 8.
-      if (std::string(kind.name) == "bspline")
-        figure(("curve_analyze_ms_" + tag).c_str(),
-               command_ms(n == big ? 1 : repeats, {"analyze", file, "--density", "8"}), "ms");
+      if (std::string(kind.name) == "bspline") {
+        const double ms = command_ms(n == big ? 1 : repeats, {"analyze", file, "--density", "8"});
+        figure(("curve_analyze_ms_" + tag).c_str(), ms, "ms");
+        if (n == small) at_small["named"] = ms;
+        if (n == big && at_small["named"] > 0)
+          figure(("curve_analyze_ratio_" + tag + "_over_" + tag_small).c_str(),
+                 ms / at_small["named"], "x");
+      }
       std::filesystem::remove(file);
     }
   }

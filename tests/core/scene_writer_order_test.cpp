@@ -126,5 +126,37 @@ TEST(SceneWriterOrder, NumbersReadBackBitForBit) {
     }
 }
 
+// The writer writes the curves one at a time, beside the rest of the document dumped at once: the
+// text must be exactly what one dump of the whole document gives (parsed and dumped again here),
+// with every curve type, with and without the keys before and after "curves", and in a file.
+TEST(SceneWriterOrder, CurvesWrittenOneAtATimeGiveTheWholeDocumentsText) {
+  const fs::path assets = fs::path(PATCHLAB_SOURCE_DIR) / "assets";
+  std::vector<Scene> scenes;
+  for (const auto& entry : fs::recursive_directory_iterator(assets))
+    if (entry.path().extension() == ".json") scenes.push_back(read_scene(entry.path()));
+  Scene all = read_scene(assets / "curves" / "interpolating-hermite-bezier.json");
+  for (const char* name : {"nurbs-circle-and-conics.json", "bspline-knot-multiplicity.json"})
+    for (const SceneCurve& c : read_scene(assets / "curves" / name).curves) all.curves.push_back(c);
+  all.name = "curves \"and\" more\n \"curves\": []";  // the writer's own marker, as text
+  all.view_json = R"({"b": [1, 2], "a": {"c": null}})";
+  all.network = read_scene(assets / "default.json").network;
+  scenes.push_back(all);
+  Scene one;
+  one.curves.push_back(all.curves.front());
+  scenes.push_back(one);
+  scenes.push_back(Scene{});
+  int with_curves = 0;
+  for (const Scene& s : scenes) {
+    with_curves += !s.curves.empty();
+    const std::string text = scene_to_json(s);
+    EXPECT_EQ(Ordered::parse(text).dump(1) + "\n", text) << s.name;
+  }
+  EXPECT_GE(with_curves, 6);
+  const fs::path file = fs::temp_directory_path() / "patchlab-writer-pieces-test.json";
+  write_scene(file, all);
+  EXPECT_EQ(slurp(file), scene_to_json(all));
+  fs::remove(file);
+}
+
 }  // namespace
 }  // namespace pl
