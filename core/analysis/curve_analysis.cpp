@@ -296,8 +296,11 @@ double curves_size(std::span<const SceneCurve> curves) {
 
 std::vector<JointReport> curve_joints(std::span<const SceneCurve> curves) {
   if (curves.empty()) return {};
-  const auto [lo, hi] = curves_box(curves);
-  const double tol = 1e-9 * glm::length(hi - lo);
+  // Not a structured binding: the cell lambda below captures the corner, which clang before 16
+  // refuses for a binding (the fuzz build compiles with clang).
+  const std::pair<Vec3, Vec3> box = curves_box(curves);
+  const Vec3 lo = box.first;
+  const double tol = 1e-9 * glm::length(box.second - lo);
   // Each end with its derivatives pointing along the direction of travel out of the joint: the
   // end of a curve arrives as it runs; its start arrives when the curve is run backwards
   // (C' negated, C'' kept).
