@@ -20,14 +20,16 @@ CurveType read_type(const JsonNode& node) {
             "\" (known: bezier, interpolating, hermite, bspline, nurbs)");
 }
 
-std::vector<Vec3> read_points(const JsonNode& node, std::size_t at_least, std::size_t at_most) {
-  const std::size_t n = node.size();
+// `packed`: the points already read by the parser (json_node.hpp), `node` then holding null.
+std::vector<Vec3> read_points(const JsonNode& node, std::size_t at_least, std::size_t at_most,
+                              std::vector<Vec3>* packed) {
+  const std::size_t n = packed ? packed->size() : node.size();
   if (n < at_least || n > at_most)
     node.fail(at_least == at_most
                   ? "expected " + std::to_string(at_least) + " points, got " + std::to_string(n)
                   : "expected " + std::to_string(at_least) + " to " + std::to_string(at_most) +
                         " points, got " + std::to_string(n));
-  return node.points();
+  return packed ? std::move(*packed) : node.points();
 }
 
 // The knots under "knots" checked one by one so the message names the offending entry.
@@ -52,10 +54,10 @@ std::vector<double> read_curve_knots(const JsonNode& node, int p, std::size_t n)
   return U;
 }
 
-void read_spline_keys(const JsonNode& node, SceneCurve& c) {
+void read_spline_keys(const JsonNode& node, SceneCurve& c, std::vector<Vec3>* packed) {
   c.degree = node.at("degree").integer_in(1, kMaxSplineDegree);
   const JsonNode pts = node.at("points");
-  c.points = read_points(pts, c.degree + 1, 1000000);
+  c.points = read_points(pts, c.degree + 1, 1000000, packed);
   if (auto k = node.find("knots")) {
     c.knots = read_curve_knots(*k, c.degree, c.points.size());
   } else {
@@ -70,7 +72,7 @@ void read_spline_keys(const JsonNode& node, SceneCurve& c) {
 
 }  // namespace
 
-SceneCurve read_curve(const JsonNode& node) {
+SceneCurve read_curve(const JsonNode& node, std::vector<Vec3>* packed_points) {
   node.require_object();
   SceneCurve c;
   c.type = read_type(node.at("type"));
@@ -78,15 +80,15 @@ SceneCurve read_curve(const JsonNode& node) {
   switch (c.type) {
     case CurveType::Bezier:
       node.allow_only({"type", "name", "points"});
-      c.points = read_points(node.at("points"), 2, kMaxSplineDegree + 1);
+      c.points = read_points(node.at("points"), 2, kMaxSplineDegree + 1, packed_points);
       break;
     case CurveType::Interpolating:
       node.allow_only({"type", "name", "points"});
-      c.points = read_points(node.at("points"), 4, 4);
+      c.points = read_points(node.at("points"), 4, 4, packed_points);
       break;
     case CurveType::Hermite: {
       node.allow_only({"type", "name", "points", "tangents"});
-      c.points = read_points(node.at("points"), 2, 2);
+      c.points = read_points(node.at("points"), 2, 2, packed_points);
       const JsonNode t = node.at("tangents");
       t.items(2);
       c.tangents = t.points();
@@ -94,11 +96,11 @@ SceneCurve read_curve(const JsonNode& node) {
     }
     case CurveType::BSpline:
       node.allow_only({"type", "name", "degree", "points", "knots"});
-      read_spline_keys(node, c);
+      read_spline_keys(node, c, packed_points);
       break;
     case CurveType::Nurbs: {
       node.allow_only({"type", "name", "degree", "points", "knots", "weights"});
-      read_spline_keys(node, c);
+      read_spline_keys(node, c, packed_points);
       const auto w = node.at("weights").items(c.points.size());
       for (const JsonNode& x : w) {
         c.weights.push_back(x.number());
@@ -116,15 +118,29 @@ SceneCurve read_curve(const JsonNode& node) {
   return c;
 }
 
+std::vector<CurveKey> curve_keys(const SceneCurve& c) {
+  const bool spline = c.type == CurveType::BSpline || c.type == CurveType::Nurbs;
+  std::vector<CurveKey> keys;
+  keys.push_back({"type", std::string(curve_type_name(c.type))});
+  if (!c.name.empty()) keys.push_back({"name", c.name});
+  if (spline) keys.push_back({"degree", c.degree});
+  keys.push_back({"points", nullptr, &c.points});
+  if (c.type == CurveType::Hermite) keys.push_back({"tangents", nullptr, &c.tangents});
+  if (spline) keys.push_back({"knots", nullptr, nullptr, &c.knots});
+  if (c.type == CurveType::Nurbs) keys.push_back({"weights", nullptr, nullptr, &c.weights});
+  return keys;
+}
+
 nlohmann::json curve_json(const SceneCurve& c) {
   nlohmann::json j;
-  j["type"] = std::string(curve_type_name(c.type));
-  if (!c.name.empty()) j["name"] = c.name;
-  if (c.type == CurveType::BSpline || c.type == CurveType::Nurbs) j["degree"] = c.degree;
-  j["points"] = points_json(c.points);
-  if (c.type == CurveType::Hermite) j["tangents"] = points_json(c.tangents);
-  if (c.type == CurveType::BSpline || c.type == CurveType::Nurbs) j["knots"] = c.knots;
-  if (c.type == CurveType::Nurbs) j["weights"] = c.weights;
+  for (CurveKey& k : curve_keys(c)) {
+    if (k.points)
+      j[k.key] = points_json(*k.points);
+    else if (k.numbers)
+      j[k.key] = *k.numbers;
+    else
+      j[k.key] = std::move(k.value);
+  }
   return j;
 }
 

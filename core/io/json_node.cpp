@@ -207,16 +207,48 @@ class TrackingBuilder {
   TrackingBuilder(json& root, const std::string& source, const StreamedArray* streamed)
       : root_(root), source_(source), streamed_(streamed) {}
 
-  bool null() { return value(nullptr); }
-  bool boolean(bool v) { return value(v); }
-  bool number_integer(json::number_integer_t v) { return value(v); }
-  bool number_unsigned(json::number_unsigned_t v) { return value(v); }
-  bool number_float(json::number_float_t v, const json::string_t&) { return value(v); }
-  bool string(json::string_t& v) { return value(std::move(v)); }
-  bool binary(json::binary_t& v) { return value(std::move(v)); }
-  bool start_object(std::size_t) { return open(json::value_t::object, false); }
-  bool start_array(std::size_t) { return open(json::value_t::array, true); }
+  bool null() { return unpacked().value(nullptr); }
+  bool boolean(bool v) { return unpacked().value(v); }
+  bool number_integer(json::number_integer_t v) { return number(v); }
+  bool number_unsigned(json::number_unsigned_t v) { return number(v); }
+  bool number_float(json::number_float_t v, const json::string_t&) { return number(v); }
+  bool string(json::string_t& v) { return unpacked().value(std::move(v)); }
+  bool binary(json::binary_t& v) { return unpacked().value(std::move(v)); }
+  bool start_object(std::size_t) { return unpacked().open(json::value_t::object, false); }
+  bool start_array(std::size_t) {
+    if (pack_.on && !pack_.in_item) {  // a point begins
+      pack_.in_item = true;
+      pack_.count = 0;
+      frames_.push_back({true, 0, ""});
+      return true;
+    }
+    if (!pack_.on && packs_here()) {  // the packed array begins; its slot holds null meanwhile
+      pack_.on = true;
+      pack_.slot = place(json(nullptr));
+      frames_.push_back({true, 0, ""});
+      return true;
+    }
+    return unpacked().open(json::value_t::array, true);
+  }
+  bool end_array() {
+    if (pack_.on && pack_.in_item && pack_.count == 3) {
+      pack_.points.emplace_back(pack_.xyz[0], pack_.xyz[1], pack_.xyz[2]);
+      pack_.in_item = false;
+      frames_.pop_back();
+      advance();
+      return true;
+    }
+    if (pack_.on && !pack_.in_item) {  // the packed array ends: its slot stays null
+      pack_.on = false;
+      pack_.done = true;
+      frames_.pop_back();
+      advance();
+      return true;
+    }
+    return unpacked().close();
+  }
   bool key(json::string_t& k) {
+    unpacked();
     json& object = *open_.back();
     if (object.contains(k)) {
       frames_.back().key = k;
@@ -226,8 +258,7 @@ class TrackingBuilder {
     slot_ = &object[k];
     return true;
   }
-  bool end_object() { return close(); }
-  bool end_array() { return close(); }
+  bool end_object() { return unpacked().close(); }
   bool parse_error(std::size_t byte, const std::string&, const json::exception& e) {
     if (dynamic_cast<const json::parse_error*>(&e)) {
       syntax_byte_ = byte;
@@ -251,6 +282,53 @@ class TrackingBuilder {
     std::size_t index;
     std::string key;
   };
+  // A packed array being read: its points so far, and the coordinates of the point being read.
+  struct Packing {
+    bool on = false, in_item = false;
+    bool done = false;  // the current streamed item's array was packed whole
+    int count = 0;
+    double xyz[3] = {0, 0, 0};
+    std::vector<Vec3> points;
+    json* slot = nullptr;
+  };
+  // At the start of an array: is it the packed key of a streamed item?
+  bool packs_here() const {
+    return streamed_ && !streamed_->packed_key.empty() && frames_.size() == 3 &&
+           !frames_[0].array && frames_[0].key == streamed_->key && frames_[1].array &&
+           !frames_[2].array && frames_[2].key == streamed_->packed_key;
+  }
+  template <class N>
+  bool number(N v) {
+    const double d = static_cast<double>(v);
+    if (pack_.on && pack_.in_item && pack_.count < 3 && std::fabs(d) <= kMaxCoordinate) {
+      pack_.xyz[pack_.count++] = d;
+      advance();
+      return true;
+    }
+    return unpacked().value(v);
+  }
+  // Leaves packing for an event that does not fit a point: the points so far (and the open
+  // point's coordinates) become JSON, and the event is built as usual, so the reader sees the
+  // array as written and reports the offending entry with its path.
+  TrackingBuilder& unpacked() {
+    if (!pack_.on) return *this;
+    pack_.on = false;
+    json array = json::array();
+    array.get_ptr<json::array_t*>()->reserve(pack_.points.size());
+    for (const Vec3& p : pack_.points) array.push_back({p.x, p.y, p.z});
+    *pack_.slot = std::move(array);
+    open_.push_back(pack_.slot);
+    pack_.points.clear();
+    if (pack_.in_item) {
+      pack_.in_item = false;
+      const Frame item = frames_.back();  // the open point: reopened as JSON with its frame
+      frames_.pop_back();
+      open(json::value_t::array, true);
+      for (int k = 0; k < pack_.count; ++k) open_.back()->push_back(pack_.xyz[k]);
+      frames_.back() = item;
+    }
+    return *this;
+  }
   // The place of the next value: the root, the end of the open array, or the slot of its key.
   json* place(json&& v) {
     if (open_.empty()) {
@@ -277,8 +355,10 @@ class TrackingBuilder {
         frames_[0].key != streamed_->key)
       return;
     auto& items = *open_.back()->get_ptr<json::array_t*>();
-    streamed_->read(items.back(), frames_[1].index);
+    streamed_->read(items.back(), frames_[1].index, pack_.done ? &pack_.points : nullptr);
     items.pop_back();
+    pack_.done = false;
+    pack_.points.clear();
   }
   bool open(json::value_t type, bool array) {
     open_.push_back(place(json(type)));
@@ -323,6 +403,7 @@ class TrackingBuilder {
   std::vector<Frame> frames_;
   json* slot_ = nullptr;
   const StreamedArray* streamed_;
+  Packing pack_;
 };
 }  // namespace
 

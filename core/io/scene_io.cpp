@@ -163,9 +163,9 @@ ScenePatch read_patch(const JsonNode& node) {
 
 // Item `index` of the scene's "curves".
 SceneCurve read_scene_curve(const nlohmann::json& item, std::size_t index,
-                            const std::string& source) {
+                            const std::string& source, std::vector<Vec3>* packed_points) {
   const JsonNode node(item, source, "curves[" + std::to_string(index) + "]");
-  SceneCurve c = read_curve(node);
+  SceneCurve c = read_curve(node, packed_points);
   // A curve shrunk to a point has no tangent or curvature (a Hermite curve may start and end at
   // one point: its tangents give it extent).
   if (c.type != CurveType::Hermite) check_span(c.points, source, node.path() + ".points");
@@ -180,14 +180,15 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   // them (and after any syntax error), as when the whole document was read first.
   std::vector<SceneCurve> curves;
   std::exception_ptr curve_error;
-  const StreamedArray streamed{"curves", [&](const nlohmann::json& item, std::size_t index) {
-                                 if (curve_error) return;
-                                 try {
-                                   curves.push_back(read_scene_curve(item, index, source));
-                                 } catch (...) {
-                                   curve_error = std::current_exception();
-                                 }
-                               }};
+  const auto read = [&](const nlohmann::json& item, std::size_t index, std::vector<Vec3>* packed) {
+    if (curve_error) return;
+    try {
+      curves.push_back(read_scene_curve(item, index, source, packed));
+    } catch (...) {
+      curve_error = std::current_exception();
+    }
+  };
+  const StreamedArray streamed{"curves", read, "points"};
   const nlohmann::json doc = parse_json(text, source, streamed);
   const JsonNode root(doc, source);
   root.require_object();
@@ -332,22 +333,54 @@ void append_at_depth(std::string& out, const std::string& text, int depth) {
   }
 }
 
-// A curve object as dump(1) writes it at `depth`, its keys in the order the format lists them
-// (the samples' order), each value dumped straight from the codec's JSON: no ordered copy of an
-// array of 400,000 points.
-void append_curve(std::string& out, const nlohmann::json& j, int depth) {
+// An array of n items as dump(1) writes it at `depth`; `item(i)` is the text of item i dumped at
+// depth 0. `flush` is offered the text after every item.
+template <class Item, class Flush>
+void append_array(std::string& out, std::size_t n, int depth, Item&& item, Flush&& flush) {
+  if (n == 0) {
+    out += "[]";
+    return;
+  }
+  out += '[';
+  for (std::size_t i = 0; i < n; ++i) {
+    out += i ? ",\n" : "\n";
+    out.append(depth + 1, ' ');
+    append_at_depth(out, item(i), depth + 1);
+    flush(out);
+  }
+  out += '\n';
+  out.append(depth, ' ');
+  out += ']';
+}
+
+// A curve object as dump(1) writes it at `depth`, its keys in the format's order, its arrays
+// written item by item from the curve (nlohmann's text for every number), handed to `flush` as
+// they grow: one curve may be the whole scene.
+template <class Flush>
+void append_curve(std::string& out, const SceneCurve& c, int depth, Flush&& flush) {
   out += '{';
   bool first = true;
-  for (const char* key : {"type", "name", "degree", "points", "tangents", "knots", "weights"}) {
-    const auto it = j.find(key);
-    if (it == j.end()) continue;
+  for (const CurveKey& k : curve_keys(c)) {
     out += first ? "\n" : ",\n";
     first = false;
     out.append(depth + 1, ' ');
     out += '"';
-    out += key;
+    out += k.key;
     out += "\": ";
-    append_at_depth(out, it->dump(1), depth + 1);
+    if (k.points)
+      append_array(
+          out, k.points->size(), depth + 1,
+          [&](std::size_t i) {
+            const Vec3& p = (*k.points)[i];
+            return nlohmann::json{p.x, p.y, p.z}.dump(1);
+          },
+          flush);
+    else if (k.numbers)
+      append_array(
+          out, k.numbers->size(), depth + 1,
+          [&](std::size_t i) { return nlohmann::json((*k.numbers)[i]).dump(1); }, flush);
+    else
+      append_at_depth(out, k.value.dump(1), depth + 1);
   }
   out += '\n';
   out.append(depth, ' ');
@@ -355,9 +388,9 @@ void append_curve(std::string& out, const nlohmann::json& j, int depth) {
 }
 
 // The text of the document (one space of indent a level, as nlohmann's dump(1) writes it), in
-// pieces: everything but the curves at once, then the curves one by one. A document of 400,000
-// curves built whole took half a gigabyte (a map per object, a node per number) before the first
-// byte was written.
+// pieces of about a megabyte: everything but the curves at once, then the curves. A document of
+// 400,000 curves built whole took half a gigabyte (a map per object, a node per number) before
+// the first byte was written.
 void write_scene_text(const Scene& scene, const TextSink& write) {
   const std::string text = document_without_curves(scene).dump(1);
   const std::string place = "\n \"curves\": []";  // only the top level has keys at one space
@@ -366,12 +399,15 @@ void write_scene_text(const Scene& scene, const TextSink& write) {
     write(text + "\n");
     return;
   }
+  const auto flush = [&](std::string& piece) {
+    if (piece.size() >= (1 << 20)) write(piece), piece.clear();
+  };
   std::string piece = text.substr(0, at) + "\n \"curves\": [\n";
   for (std::size_t i = 0; i < scene.curves.size(); ++i) {
     piece += "  ";
-    append_curve(piece, curve_json(scene.curves[i]), 2);
+    append_curve(piece, scene.curves[i], 2, flush);
     piece += i + 1 < scene.curves.size() ? ",\n" : "\n";
-    if (piece.size() >= (1 << 20)) write(piece), piece.clear();
+    flush(piece);
   }
   piece += " ]";
   piece.append(text, at + place.size());

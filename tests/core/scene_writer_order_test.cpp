@@ -4,6 +4,7 @@
 // indentation vary between the hand-written samples and are not compared.)
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -124,6 +125,34 @@ TEST(SceneWriterOrder, NumbersReadBackBitForBit) {
       EXPECT_EQ(a, b) << i << " " << k;
       EXPECT_EQ(std::signbit(a), std::signbit(b)) << i << " " << k;
     }
+}
+
+// One curve bigger than the writer's pieces (about a megabyte): its arrays are written item by
+// item, flushed within the curve; the file must still be one dump of the whole document.
+TEST(SceneWriterOrder, ACurveBiggerThanAPieceIsWrittenWhole) {
+  Scene s;
+  SceneCurve c;
+  c.type = CurveType::Nurbs;
+  c.degree = 3;
+  const int n = 60000;
+  for (int i = 0; i < n; ++i) {
+    c.points.emplace_back(i * 0.1, std::sin(i * 0.3), -1e-7 * i);
+    c.weights.push_back(1 + 0.5 * std::cos(i * 0.7));
+  }
+  for (int i = 0; i < n + 4; ++i) c.knots.push_back(std::clamp(i - 3, 0, n - 3) / 7.0);
+  s.curves.push_back(c);
+  const fs::path file = fs::temp_directory_path() / "patchlab-writer-big-curve-test.json";
+  write_scene(file, s);
+  const std::string text = slurp(file);
+  EXPECT_GT(text.size(), 4u << 20);
+  EXPECT_EQ(Ordered::parse(text).dump(1) + "\n", text);
+  EXPECT_EQ(text, scene_to_json(s));
+  const Scene back = read_scene(file);
+  ASSERT_EQ(back.curves.size(), 1u);
+  EXPECT_EQ(back.curves[0].points, c.points);
+  EXPECT_EQ(back.curves[0].weights, c.weights);
+  EXPECT_EQ(back.curves[0].knots, c.knots);
+  fs::remove(file);
 }
 
 // The writer writes the curves one at a time, beside the rest of the document dumped at once: the
