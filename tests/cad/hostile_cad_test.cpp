@@ -11,6 +11,7 @@
 #include <Geom_Curve.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -63,9 +64,15 @@ Ran run_export(const std::filesystem::path& scene, const std::filesystem::path& 
                           scene.string() + "' -o '" + out.string() + "' 2>&1";
   std::FILE* p = popen(cmd.c_str(), "r");
   Ran r;
+  const auto start = std::chrono::steady_clock::now();
   char buf[4096];
   while (std::size_t n = std::fread(buf, 1, sizeof buf, p)) r.output.append(buf, n);
   const int status = pclose(p);
+  // Printed, not asserted (times are for benchmarks, not unit tests): the run's wall time, so
+  // that the 10 s bound can be read off a quiet run of these tests.
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("# export %s: %.2f s\n", out.filename().c_str(), seconds);
   if (WIFEXITED(status)) {
     r.code = WEXITSTATUS(status);
     // `timeout` reports a child killed by a signal as 128 + the signal.
