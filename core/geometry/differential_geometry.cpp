@@ -109,7 +109,13 @@ template <class T>
   const T inv = 1.0 / det;
   g.gaussian = (L * N - M * M) * inv;
   g.mean = (E * N - 2 * F * M + G * L) * (0.5 * inv);
-  const T disc = square_root(non_negative(g.mean * g.mean - g.gaussian));
+  // (k_max - k_min)^2 = (a - d)^2 + 4 b c for the shape operator W = I^-1 II = [[a, b], [c, d]]:
+  // each term vanishes at an umbilic with its own rounding (about eps k), where H^2 - K subtracts
+  // two numbers of size k^2 and kept only half the digits of k_max - k_min (3.9e-8 relative on a
+  // sphere). Each entry is scaled by 1 / det before it is squared, so nothing overflows or
+  // underflows that H itself does not.
+  const T a_d = (G * L - E * N) * inv, w_b = (G * M - F * N) * inv, w_c = (E * M - F * L) * inv;
+  const T disc = 0.5 * square_root(non_negative(a_d * a_d + 4 * w_b * w_c));
   g.kmin = g.mean - disc;
   g.kmax = g.mean + disc;
   return g;

@@ -177,7 +177,6 @@ TEST(ClassicPatches, NurbsSphereIsExact) {
     gauss = std::max(gauss, std::fabs(g.gaussian - 1 / (R * R)));
     mean = std::max(mean, std::fabs(std::fabs(g.mean) - 1 / R));
     // Normal curvature II(d)/I(d) in random tangent directions: every direction bends by 1/R.
-    // (k_min/k_max come from sqrt(H^2 - K), which at an umbilic amplifies rounding to ~1e-8.)
     const FundamentalForms f = fundamental_forms(j);
     for (int d = 0; d < 8; ++d) {
       const double a = std::cos(0.7 * d + x.x), b = std::sin(0.7 * d + x.y);
