@@ -2,6 +2,8 @@
 //   drag_sync_ms_24_faces, drag_sync_ms_1536_faces: SceneEvaluation::sync per frame of a vertex
 //     drag on the closed cube-sphere networks (GB faces, density 16, the editor's drag density):
 //     a drag frame must not cost more on a big network;
+//   drag_sync_ms_free_point_24_faces, _1536_faces and their ratio: the same for the centre free
+//     point of a GB face (its interior control);
 //   topology_sync_ms_1536_faces: the sync after deleting one face and after making it again;
 //   drag_frame_ms, typed_edit_ms: the same vertex of the 1,536-face network moved by a drag
 //     frame (Document::drag_to + sync) and by a typed coordinate (Document::execute + sync).
@@ -58,6 +60,26 @@ double drag_sync_ms(int k, int frames) {
   });
 }
 
+// The same for the centre free point of face 0 (a GB face: its interior control), dragged off
+// its default position: only that face changes, whatever the size of the network.
+double free_point_drag_sync_ms(int k, int frames) {
+  Document doc(cube_sphere_scene(k));
+  SceneEvaluation live(doc.scene(), kDensity, std::nullopt);
+  const PointRef centre = PointRef::free_point(0, InteriorOffset{.centre = true});
+  const Vec3 start = point_position(doc.scene(), centre);
+  const double size = 0.2 / k;
+  doc.begin_drag({centre});
+  int i = 0;
+  for (; i < 3; ++i) {
+    doc.drag_to({drag_position(start, i, size)});
+    live.sync(doc.scene());
+  }
+  return median_ms(frames, [&] {
+    doc.drag_to({drag_position(start, i++, size)});
+    live.sync(doc.scene());
+  });
+}
+
 }  // namespace
 
 void bench_engine(const Options& o) {
@@ -66,6 +88,12 @@ void bench_engine(const Options& o) {
   figure("drag_sync_ms_24_faces", drag_sync_ms(small, frames), "ms");
   figure(o.quick ? "drag_sync_ms_96_faces" : "drag_sync_ms_1536_faces", drag_sync_ms(large, frames),
          "ms");
+  const double free_small = free_point_drag_sync_ms(small, frames),
+               free_large = free_point_drag_sync_ms(large, frames);
+  figure("drag_sync_ms_free_point_24_faces", free_small, "ms");
+  figure(o.quick ? "drag_sync_ms_free_point_96_faces" : "drag_sync_ms_free_point_1536_faces",
+         free_large, "ms");
+  figure("drag_sync_free_point_ratio_large_over_small", free_large / free_small, "x");
 
   // A topology edit: delete a face, make it again; every other face keeps its evaluator.
   {
