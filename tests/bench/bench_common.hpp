@@ -48,6 +48,7 @@ void figures_quiet_busy(const char* name, const char* unit, double quiet, double
                         const char* ratio_name);
 
 // One function per benchmark file; patchlab_bench.cpp calls them in order.
+void bench_machine(const Options& options);
 void bench_bezier(const Options& options);
 void bench_gb(const Options& options);
 void bench_gb_face(const Options& options);

@@ -1,7 +1,8 @@
 // The benchmark program: prints "figure NAME VALUE UNIT" lines. Run without arguments for real
 // figures (Release build), with --quick for a seconds-long smoke run, with --grains for the sweep
-// that chose the parallel grains, with --only NAME,... for some of the benchmarks (bezier, gb,
-// gb_face, interior, engine, catmull_clark, cad, cad_ngon, curve, curve_scale).
+// that chose the parallel grains, with --only NAME,... for some of the benchmarks (machine,
+// bezier, gb, gb_face, interior, engine, catmull_clark, cad, cad_ngon, curve, curve_scale,
+// schemes). The machine's floors (memory stream, scalar arithmetic) come first.
 #include <oneapi/tbb/info.h>
 
 #include <cstring>
@@ -20,10 +21,10 @@ int main(int argc, char** argv) {
     } else if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc) {
       only.append(",").append(argv[++i]).append(",");
     } else {
-      std::fprintf(
-          stderr,
-          "usage: patchlab_bench [--quick] [--grains] [--only bezier,gb,gb_face,interior,engine,"
-          "catmull_clark,cad,cad_ngon,curve,curve_scale,schemes]\n");
+      std::fprintf(stderr,
+                   "usage: patchlab_bench [--quick] [--grains] [--only "
+                   "machine,bezier,gb,gb_face,interior,engine,"
+                   "catmull_clark,cad,cad_ngon,curve,curve_scale,schemes]\n");
       return 2;
     }
   }
@@ -37,6 +38,7 @@ int main(int argc, char** argv) {
     pl::bench::bench_grains(options);
     return 0;
   }
+  run("machine", pl::bench::bench_machine);  // the floors first, beside every other figure
   run("bezier", pl::bench::bench_bezier);
   run("gb", pl::bench::bench_gb);
   run("gb_face", pl::bench::bench_gb_face);
