@@ -141,6 +141,9 @@ CadExportReport export_cad_unguarded(const Scene& scene, const std::filesystem::
       if (!f.converged &&
           (!failed || (failed->end == FitEnd::SharedWork && f.end != FitEnd::SharedWork)))
         failed = &f;
+    if (failed && failed->surface.points.empty())  // refused before its first fit
+      throw DataError(options.source, failed->name,
+                      "no fit made: " + fit_end_text(failed->end, ft) + " by its first grid");
     if (failed) {
       const CadFace& f = *failed;
       // Only the position tolerance is an option; say which one failed, and what stopped it.

@@ -156,14 +156,14 @@ class GridCache {
   std::vector<Row> rows_;
 };
 
-// The bounds of a fit, checked before `work` more grid points: the deadline and the fit's own
-// bound (the first fit is always made, so that there is a result), then the bound shared with
-// the other fits of the export. Returns the bound that refuses it, or counts it in `done`.
+// The bounds of a fit, checked before `work` more grid points: the deadline (the first fit is
+// always started), the fit's own bound, then the bound shared with the other fits of the export.
+// Returns the bound that refuses it, or counts it in `done`. The first fit is bounded too: a
+// face whose sides came with hundreds of spans asked for millions of grid points at once, a
+// gigabyte of samples, before the bound was ever consulted. Refused there, the fit has no result.
 std::optional<FitEnd> take_work(std::size_t& done, std::size_t work, const FitTolerance& tol) {
-  if (done > 0) {
-    if (std::chrono::steady_clock::now() >= tol.deadline) return FitEnd::Deadline;
-    if (done + work > tol.max_work) return FitEnd::Work;
-  }
+  if (done > 0 && std::chrono::steady_clock::now() >= tol.deadline) return FitEnd::Deadline;
+  if (done + work > tol.max_work) return FitEnd::Work;
   if (tol.shared_work && tol.shared_work->fetch_add(work) + work > tol.max_shared_work)
     return FitEnd::SharedWork;
   done += work;

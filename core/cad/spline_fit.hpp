@@ -18,8 +18,9 @@ namespace pl {
 
 // A fit's work is the number of grid points it evaluates and compares (fit samples and check
 // points, summed over its refinements): it bounds the time of one fit whatever the function.
-// A refinement that would pass max_work is not started; one that would start after the
-// deadline neither. Either way the fit reports failure, saying which bound stopped it.
+// A refinement that would pass max_work is not started, the first one included (the fit then has
+// no result); one that would start after the deadline neither. Either way the fit reports
+// failure, saying which bound stopped it.
 inline constexpr std::size_t kDefaultFitWork = std::size_t(1) << 21;
 // The same summed over every fit of one export (shared by the fits running in parallel).
 inline constexpr std::size_t kDefaultExportWork = std::size_t(1) << 24;

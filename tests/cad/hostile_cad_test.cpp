@@ -324,3 +324,45 @@ TEST(HostileCad, CatmullClarkFanAndNGonExportOrSayWhy) {
 
 }  // namespace
 }  // namespace pl
+
+namespace pl {
+namespace {
+
+// Found by the writer's fuzz target: a seven-sided GB patch of degree 1 with one coordinate at
+// 4.8e8 (singular; the command line refuses it before export, the library call does not). Its
+// side curves came with hundreds of spans, and the face's first fit asked for millions of grid
+// points at once, past its work bound, which only later refinements consulted: 2.3 GB, and the
+// fuzzer's memory limit. The first fit is bounded too: the export is refused, naming the face.
+TEST(HostileCad, AFirstFitPastItsWorkBoundIsRefusedBeforeItsSamples) {
+  const std::string text = R"({"patchlab": 1, "patches": [{"type": "gb", "name": "gb",
+      "sides": 7, "degree": 1, "points": [
+      [-0.2503520363275296, 0.205800062592328918214642, -0.08715757724135882],
+      [-0.5048461045998571, -0.6877661591839741, 0.0016813900484350603],
+      [-0.9422223406686581, -0.8834546557201531, 0.08545989080882804],
+      [-0.9364566872907963, 0.21511998808781552, 484350603],
+      [-0.9422223406686581, -0.8834546557201531, 0.08545989080882804],
+      [-0.9364566872907963, 0.21511998808781552, -0.08796957599716701],
+      [-0.4902608213407002, 0.589493345374605, 0.0033624032721138474],
+      [0.18651236942257487, 0.3190983623493521, 0.08457468311429334]]}]})";
+  const Scene scene = parse_scene(text, "fuzz.json");
+  const Dir dir;
+  CadExportOptions o;
+  o.source = "fuzz.json";
+  o.max_fit_work = std::size_t(1) << 16;  // as the fuzz target sets it
+  std::string message;
+  try {
+    export_cad(scene, dir / "out.step", o);
+  } catch (const DataError& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("fuzz.json: gb"), std::string::npos) << message;
+  // Refused before the grid was sampled (before, it was sampled: 2.9 GB and 3.9 s here).
+  EXPECT_NE(message.find("no fit made: its work bound of 6.55e+04 grid points reached by its "
+                         "first grid"),
+            std::string::npos)
+      << message;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.step"));
+}
+
+}  // namespace
+}  // namespace pl
