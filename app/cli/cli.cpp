@@ -52,7 +52,7 @@ void print_help(std::ostream& os) {
         "  --density N   samples per boundary curve (default 32)\n"
         "  --scheme S    fill network faces with S: gregory (3- and 4-sided faces), gb,\n"
         "                side-based, corner-based, generalized-coons, composite-ribbon,\n"
-        "                midpoint or midpoint-coons (these six: convex faces)\n"
+        "                midpoint, midpoint-coons or elastic (these seven: convex faces)\n"
         "Exit status: 0 success, 1 bad input (message names file and place), 2 wrong usage\n"
         "(what the command line alone shows: options, values, file name extensions).\n";
 }

@@ -34,6 +34,7 @@ constexpr Titles kTitles[] = {
     {"composite-ribbon", "Composite ribbon", "composite"},
     {"midpoint", "Midpoint", "midpoint"},
     {"midpoint-coons", "Midpoint Coons", "midpoint Coons"},
+    {"elastic", "Elastic (Sabin)", "elastic"},
 };
 const Titles* titles_of(FaceScheme s) {
   const std::string k = scheme_keyword(s);

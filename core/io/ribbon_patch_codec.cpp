@@ -85,7 +85,7 @@ void write_ribbon_patch(const Patch& patch, nlohmann::json& out) {
   for (const RibbonSide& s : p.sides())
     sides.push_back({{"curve", curve_json(s.curve)}, {"cross", curve_json(s.cross)}});
   out["sides"] = sides;
-  if (!p.regular_domain()) {
+  if (!p.default_domain()) {
     nlohmann::json dom = nlohmann::json::array();
     for (const Vec2& v : p.polygon().vertices()) dom.push_back({v.x, v.y});
     out["domain"] = dom;

@@ -25,7 +25,8 @@ enum class FaceScheme {
   GeneralizedCoons,
   CompositeRibbon,
   Midpoint,
-  MidpointCoons
+  MidpointCoons,
+  Elastic
 };
 
 struct NetworkEdge {

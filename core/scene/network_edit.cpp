@@ -423,12 +423,14 @@ constexpr RibbonName kRibbonSchemes[] = {
     {FaceScheme::CompositeRibbon, RibbonScheme::CompositeRibbon},
     {FaceScheme::Midpoint, RibbonScheme::Midpoint},
     {FaceScheme::MidpointCoons, RibbonScheme::MidpointCoons},
+    {FaceScheme::Elastic, RibbonScheme::Elastic},
 };
 constexpr FaceScheme kAllFaceSchemes[] = {
     FaceScheme::Gregory,          FaceScheme::GB,
     FaceScheme::SideBased,        FaceScheme::CornerBased,
     FaceScheme::GeneralizedCoons, FaceScheme::CompositeRibbon,
     FaceScheme::Midpoint,         FaceScheme::MidpointCoons,
+    FaceScheme::Elastic,
 };
 }  // namespace
 

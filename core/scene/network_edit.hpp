@@ -102,7 +102,7 @@ Vec3 stored_normal(const Vec3& normal);
 
 // The name of a scheme as the file and the interface spell it ("auto", "gregory", "gb",
 // "side-based", "corner-based", "generalized-coons", "composite-ribbon", "midpoint",
-// "midpoint-coons").
+// "midpoint-coons", "elastic").
 std::string scheme_keyword(FaceScheme scheme);
 // The scheme a keyword names (every keyword of scheme_keyword, "auto" included), or none.
 std::optional<FaceScheme> parse_scheme_keyword(std::string_view keyword);

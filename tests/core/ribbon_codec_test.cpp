@@ -39,7 +39,7 @@ TEST(RibbonCodec, WriteAndReadGiveTheSamePatch) {
   const auto& mp = dynamic_cast<const RibbonPatch&>(*back.patches[0].patch);
   EXPECT_EQ(mp.sides()[1].curve.type, CurveType::BSpline);
   EXPECT_EQ(mp.options().twists, transfinite::TwistEstimate::ForwardDifference);
-  EXPECT_FALSE(mp.regular_domain());
+  EXPECT_FALSE(mp.default_domain());
 }
 
 TEST(RibbonCodec, NetworkFaceSchemesSurviveASave) {

@@ -50,18 +50,21 @@ ComparisonOptions quick(FaceScheme base) {
 
 // Plane reproduction: every figure but the area and the throughput vanishes (up to rounding:
 // exactly zero in exact arithmetic). The positions and normals are on the plane to rounding for
-// every scheme. The curvatures come from second derivatives, where the side-based scheme (Kato)
-// amplifies rounding: its blends 1/d_i² are singular at the corners, and next to a corner its
-// second derivatives are rounding times 1/d² (measured: |H| up to 1.9e-8 on the quad, 1.6e-8 on
-// the pentagon at density 16); for it the curvature figures are bounded, not zero.
+// every scheme. The curvatures come from second derivatives, where the schemes whose weights are
+// singular on the boundary amplify rounding: the side-based scheme (Kato; blends 1/d_i², next to
+// a corner its second derivatives are rounding times 1/d²; measured |H| up to 1.9e-8 on the quad,
+// 1.6e-8 on the pentagon at density 16) and, less, the elastic scheme (weights delta_i^-3, scaled
+// away for the nearest side but not for the second one near a corner; measured |H| up to 8.8e-11
+// on the pentagon). For them the curvature figures are bounded, not zero.
 void expect_planar(const SchemeFigures& f, const std::string& what) {
   SCOPED_TRACE(what);
   EXPECT_TRUE(f.cannot_fill.empty()) << f.cannot_fill;
   EXPECT_LE(f.max_normal_angle_deg, 1e-12);
   EXPECT_LE(f.max_boundary_deviation, 1e-14);
   EXPECT_LE(f.max_distance_to_base, 1e-14);
-  const bool amplifies = scheme_keyword(f.scheme) == "side-based";
-  const double curvature = amplifies ? 1e-7 : 1e-12, energy = amplifies ? 1e-14 : 1e-24;
+  const std::string k = scheme_keyword(f.scheme);
+  const double curvature = k == "side-based" ? 1e-7 : k == "elastic" ? 1e-9 : 1e-12;
+  const double energy = k == "side-based" ? 1e-14 : k == "elastic" ? 1e-17 : 1e-24;
   for (double v : {f.mean[0], f.mean[1], f.gaussian[0], f.gaussian[1]})
     EXPECT_LE(std::fabs(v), curvature);
   EXPECT_LE(f.bending_energy, energy);

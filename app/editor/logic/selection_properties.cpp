@@ -60,6 +60,8 @@ const char* scheme_name(FaceScheme scheme) {
       return "Midpoint";
     case FaceScheme::MidpointCoons:
       return "Midpoint Coons";
+    case FaceScheme::Elastic:
+      return "Elastic";
   }
   return "?";
 }

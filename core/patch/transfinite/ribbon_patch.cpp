@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/patch/transfinite/angular_domain.hpp"
 #include "core/patch/transfinite/vec_jet.hpp"
 
 namespace pl {
@@ -110,33 +111,42 @@ int ribbon_reflex_corner(const std::vector<RibbonSide>& sides) {
 
 namespace {
 
-ConvexPolygonDomain make_domain(std::size_t n, const RibbonPatchOptions& o) {
-  if (n < 3 || n > std::size_t(RibbonPatch::kMaxSides))
-    throw std::invalid_argument("a ribbons patch has 3 to " + str(RibbonPatch::kMaxSides) +
-                                " sides, this one has " + std::to_string(n));
-  if (!o.domain) return ConvexPolygonDomain::regular(int(n));
-  if (o.domain->size() != n)
-    throw std::invalid_argument("the domain has " + std::to_string(o.domain->size()) +
-                                " vertices for " + std::to_string(n) + " sides");
-  return ConvexPolygonDomain(*o.domain);
-}
-
-Vec2 domain_centre(const ConvexPolygonDomain& d, bool regular) {
-  if (regular) return Vec2(0);  // the regular n-gon's centre, exactly
-  Vec2 c(0);
-  for (const Vec2& v : d.vertices()) c += v;
-  return c / double(d.vertices().size());
+// Whether the scheme's default domain is built from the curves (the side-based scheme's).
+bool curve_domain(RibbonScheme scheme, const RibbonPatchOptions& o) {
+  return scheme == RibbonScheme::SideBased && !o.domain;
 }
 
 }  // namespace
+
+RibbonPatch::DomainChoice RibbonPatch::choose_domain(RibbonScheme scheme,
+                                                     const std::vector<RibbonSide>& sides,
+                                                     const RibbonPatchOptions& o) {
+  const std::size_t n = sides.size();
+  if (n < 3 || n > std::size_t(RibbonPatch::kMaxSides))
+    throw std::invalid_argument("a ribbons patch has 3 to " + str(RibbonPatch::kMaxSides) +
+                                " sides, this one has " + std::to_string(n));
+  if (curve_domain(scheme, o))
+    if (const auto v = transfinite::angular_domain(unit_sides(sides)))
+      return {ConvexPolygonDomain(*v), transfinite::angular_domain_centre(*v)};
+  if (!o.domain)  // the regular n-gon, centred at (0, 0) exactly
+    return {ConvexPolygonDomain::regular(int(n)), Vec2(0)};
+  if (o.domain->size() != n)
+    throw std::invalid_argument("the domain has " + std::to_string(o.domain->size()) +
+                                " vertices for " + std::to_string(n) + " sides");
+  ConvexPolygonDomain d(*o.domain);
+  Vec2 c(0);
+  for (const Vec2& v : d.vertices()) c += v;
+  return {std::move(d), c / double(n)};
+}
 
 RibbonPatch::RibbonPatch(RibbonScheme scheme, std::vector<RibbonSide> sides,
                          RibbonPatchOptions options)
     : scheme_(scheme),
       sides_(std::move(sides)),
       options_(std::move(options)),
-      domain_(make_domain(sides_.size(), options_)),
-      params_(domain_.vertices(), domain_centre(domain_, !options_.domain)) {
+      domain_(ConvexPolygonDomain::regular(3)),  // placeholders until set_domain below
+      params_(domain_.vertices(), Vec2(0)) {
+  set_domain(choose_domain(scheme_, sides_, options_));
   if ((options_.midpoint || options_.fullness != 1) && !transfinite::has_central_point(scheme_))
     throw std::invalid_argument(
         "a midpoint or fullness is a setting of the midpoint schemes "
@@ -163,10 +173,15 @@ RibbonPatch::RibbonPatch(RibbonScheme scheme, std::vector<RibbonSide> sides,
     points_.insert(points_.end(), s.cross.points.begin(), s.cross.points.end());
   }
   if (options_.midpoint) points_.push_back(*options_.midpoint);
+  rebuild();
+}
+
+void RibbonPatch::set_domain(DomainChoice d) {
+  domain_ = std::move(d.polygon);
+  params_ = transfinite::PolygonParameters(domain_.vertices(), d.centre);
   diameter_ = 0;
   for (const Vec2& a : domain_.vertices())
     for (const Vec2& b : domain_.vertices()) diameter_ = std::max(diameter_, glm::length(a - b));
-  rebuild();
 }
 
 namespace {
@@ -253,6 +268,7 @@ void RibbonPatch::set_control_point(std::size_t k, const Vec3& p) {
     if (slot % 2 == 0) {
       side.curve.points[j] = p;
       unit.curve.spline().points[j] = p;
+      if (curve_domain(scheme_, options_)) set_domain(choose_domain(scheme_, sides_, options_));
     } else {
       side.cross.points[j] = p;
       unit.cross.spline().points[j] = p;

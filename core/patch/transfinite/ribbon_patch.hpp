@@ -42,8 +42,10 @@ struct RibbonPatchOptions {
   // c + f (m - c), c the average of the corners and m the default midpoint above; 1 is the
   // default, 0 pulls the middle to the corners' average, above 1 the face bulges more.
   double fullness = 1;
-  // The domain polygon (counter-clockwise, strictly convex). None: the regular n-gon of
-  // ConvexPolygonDomain::regular.
+  // The domain polygon (counter-clockwise, strictly convex). None: the scheme's default, the
+  // regular n-gon of ConvexPolygonDomain::regular, or for the side-based scheme the polygon the
+  // research library builds from the curves' arc lengths and corner angles (its "angular"
+  // domain; the regular n-gon where that comes out not convex).
   std::optional<std::vector<Vec2>> domain;
   // Check that the ribbons meet at the corners (ribbon_corner_problem) and that the face is
   // convex; off only for ribbons known to be compatible by construction (network faces).
@@ -77,8 +79,10 @@ class RibbonPatch : public PatchType<RibbonPatch> {
   transfinite::RibbonScheme scheme() const { return scheme_; }
   const std::vector<RibbonSide>& sides() const { return sides_; }
   const RibbonPatchOptions& options() const { return options_; }
-  // Whether the domain is the default regular n-gon (not written to files).
-  bool regular_domain() const { return !options_.domain.has_value(); }
+  // Whether the domain is the scheme's default (not written to files): the regular n-gon, or for
+  // the side-based scheme the polygon built from the curves (transfinite/angular_domain.hpp),
+  // rebuilt whenever a curve point moves.
+  bool default_domain() const { return !options_.domain.has_value(); }
 
   const Domain& domain() const override { return domain_; }
   const ConvexPolygonDomain& polygon() const { return domain_; }
@@ -98,6 +102,14 @@ class RibbonPatch : public PatchType<RibbonPatch> {
   const Vec3& central_point() const { return central_; }
 
  private:
+  struct DomainChoice {
+    ConvexPolygonDomain polygon;
+    Vec2 centre;  // orients the parameters' inward normals
+  };
+  static DomainChoice choose_domain(transfinite::RibbonScheme scheme,
+                                    const std::vector<RibbonSide>& sides,
+                                    const RibbonPatchOptions& options);
+  void set_domain(DomainChoice d);
   void rebuild();
   // The ribbons of the given control points (all of them, in patch order).
   transfinite::RibbonSet ribbon_set_of(const std::vector<Vec3>& points) const;

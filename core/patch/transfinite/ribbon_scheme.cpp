@@ -16,10 +16,12 @@ constexpr Entry kEntries[] = {
     {RibbonScheme::CompositeRibbon, "composite-ribbon"},
     {RibbonScheme::Midpoint, "midpoint"},
     {RibbonScheme::MidpointCoons, "midpoint-coons"},
+    {RibbonScheme::Elastic, "elastic"},
 };
 constexpr RibbonScheme kAll[] = {RibbonScheme::SideBased,        RibbonScheme::CornerBased,
                                  RibbonScheme::GeneralizedCoons, RibbonScheme::CompositeRibbon,
-                                 RibbonScheme::Midpoint,         RibbonScheme::MidpointCoons};
+                                 RibbonScheme::Midpoint,         RibbonScheme::MidpointCoons,
+                                 RibbonScheme::Elastic};
 }  // namespace
 
 std::string_view ribbon_scheme_name(RibbonScheme scheme) {
@@ -60,6 +62,8 @@ SurfaceJet scheme_surface(RibbonScheme scheme, const SchemeInput& in, Vec2 x) {
       const DeficientSurface d = midpoint_coons_surface(in, x);
       return d.s0 + d.deficiency * in.central;
     }
+    case RibbonScheme::Elastic:
+      return elastic_surface(in, x);
   }
   return {};
 }

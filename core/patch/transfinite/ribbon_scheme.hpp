@@ -19,11 +19,12 @@ enum class RibbonScheme {
   GeneralizedCoons,
   CompositeRibbon,
   Midpoint,
-  MidpointCoons
+  MidpointCoons,
+  Elastic
 };
 
 // "side-based", "corner-based", "generalized-coons", "composite-ribbon", "midpoint",
-// "midpoint-coons".
+// "midpoint-coons", "elastic".
 std::string_view ribbon_scheme_name(RibbonScheme scheme);
 std::optional<RibbonScheme> parse_ribbon_scheme(std::string_view name);
 std::span<const RibbonScheme> all_ribbon_schemes();
@@ -52,6 +53,7 @@ struct DeficientSurface {
 };
 DeficientSurface midpoint_surface(const SchemeInput& in, Vec2 x);
 DeficientSurface midpoint_coons_surface(const SchemeInput& in, Vec2 x);
+SurfaceJet elastic_surface(const SchemeInput& in, Vec2 x);
 
 SurfaceJet scheme_surface(RibbonScheme scheme, const SchemeInput& in, Vec2 x);
 
