@@ -492,9 +492,10 @@ double face_size(const Face& f) {
   return glm::length(hi - lo);
 }
 
-// Random points inside the domain (rejection in the bounding box, 1e-4 off every side line: within
-// 1e-5 of a side the library's elastic scheme returns the boundary point itself, a step of about
-// 1e-5 |D| that PatchLab does not copy) and eleven points on every side.
+// Eleven points on every side, two near every corner, and random points inside the domain
+// (rejection in the bounding box, 1e-4 off every side line: within 1e-5 of a side the library's
+// elastic scheme returns the boundary point itself, a step of about 1e-5 |D| that PatchLab does
+// not copy).
 std::vector<Vec2> domain_points(const std::vector<Vec2>& v, unsigned seed) {
   const int n = int(v.size());
   std::vector<Vec2> out;
@@ -502,9 +503,15 @@ std::vector<Vec2> domain_points(const std::vector<Vec2>& v, unsigned seed) {
     for (int k = 0; k <= 10; ++k)
       out.push_back((1 - k / 10.0) * v[std::size_t((i + n - 1) % n)] +
                     (k / 10.0) * v[std::size_t(i)]);
+  // Towards every corner, where two sides' weights compete (1e-2 and 1e-3 of the domain from the
+  // vertex, towards the vertices' average).
+  Vec2 mean(0);
+  for (const Vec2& p : v) mean += p / double(n);
+  for (const Vec2& p : v)
+    for (double r : {1e-2, 1e-3}) out.push_back(p + r * glm::normalize(mean - p));
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(-1.5, 1.5);
-  while (out.size() < std::size_t(11 * n + 200)) {
+  while (out.size() < std::size_t(13 * n + 200)) {
     const Vec2 x(u(rng), u(rng));
     bool inside = true;
     for (int i = 0; i < n && inside; ++i) {
