@@ -45,7 +45,7 @@ std::string Document::execute(std::unique_ptr<Command> command) {
     record(label, std::move(before), std::move(key));
   }
   may_merge_ = true;
-  ++revision_;
+  changed();
   return label;
 }
 
@@ -64,7 +64,7 @@ bool Document::undo() {
   may_merge_ = false;
   if (!can_undo()) return false;
   scene_ = history_[--history_position_].before;
-  ++revision_;
+  changed();
   return true;
 }
 
@@ -73,7 +73,7 @@ bool Document::redo() {
   may_merge_ = false;
   if (!can_redo()) return false;
   scene_ = history_[history_position_++].after;
-  ++revision_;
+  changed();
   return true;
 }
 
@@ -137,7 +137,33 @@ void Document::drag_to(const std::vector<Vec3>& positions) {
   restore_drag_start();
   move_points(scene_, drag_->points, positions, drag_->mode, drag_->free_defaults);
   drag_->current = positions;
+  // Free points alone, the network staying put: only their faces' offsets changed.
+  std::optional<std::vector<int>> faces = std::vector<int>{};
+  for (std::size_t i = 0; i < drag_->points.size() && faces; ++i) {
+    if (drag_->points[i].kind == PointRef::Kind::FreePoint && drag_->free_defaults[i])
+      faces->push_back(drag_->points[i].object);
+    else
+      faces.reset();
+  }
+  changed(std::move(faces));
+}
+
+void Document::changed(std::optional<std::vector<int>> interior_faces) {
   ++revision_;
+  edits_[revision_ % kEditRecord] = std::move(interior_faces);
+}
+
+std::optional<std::vector<int>> Document::interior_faces_since(uint64_t since) const {
+  if (since > revision_ || revision_ - since > kEditRecord) return std::nullopt;
+  std::vector<int> faces;
+  for (uint64_t r = since + 1; r <= revision_; ++r) {
+    const auto& edit = edits_[r % kEditRecord];
+    if (!edit) return std::nullopt;
+    faces.insert(faces.end(), edit->begin(), edit->end());
+  }
+  std::sort(faces.begin(), faces.end());
+  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+  return faces;
 }
 
 void Document::end_drag() {
@@ -155,7 +181,7 @@ void Document::cancel_drag() {
   scene_ = std::move(drag_->before);
   drag_.reset();
   may_merge_ = false;
-  ++revision_;
+  changed();
 }
 
 const std::vector<PointRef>& Document::drag_points() const {

@@ -28,6 +28,12 @@ class Document {
   }
   // Increases with every change of the scene (edits, undo, redo, drag steps).
   uint64_t revision() const { return revision_; }
+  // The network faces whose GB interior offsets alone changed from revision `since` to now (the
+  // steps of a free-point drag), so that an evaluation can follow them without comparing the
+  // whole scene (SceneEvaluation::sync's InteriorEdit); empty if nothing changed. None when
+  // anything else changed in between, or `since` is older than the last kEditRecord revisions.
+  std::optional<std::vector<int>> interior_faces_since(uint64_t since) const;
+  static constexpr std::size_t kEditRecord = 64;
 
   // Applies the command to a copy of the scene and makes that the scene, as one undo step;
   // returns the command's label (what the status bar shows). If the command throws (EditRefused
@@ -94,6 +100,9 @@ class Document {
     Clock::time_point time;
   };
   void record(std::string label, Scene before, std::string merge_key = {});
+  // Counts a change of the scene: the faces whose offsets alone it changed, or none for any
+  // other change.
+  void changed(std::optional<std::vector<int>> interior_faces = std::nullopt);
   void restore_drag_start();
 
   Scene scene_;
@@ -102,6 +111,9 @@ class Document {
   std::size_t history_position_ = 0;  // commands [0, position) are applied
   std::size_t saved_position_ = 0;    // history position at the last save (SIZE_MAX: never)
   uint64_t revision_ = 0;
+  // What each of the last revisions changed (revision r at edits_[r % kEditRecord]).
+  std::vector<std::optional<std::vector<int>>> edits_ =
+      std::vector<std::optional<std::vector<int>>>(kEditRecord);
   std::optional<Drag> drag_;
   bool may_merge_ = false;  // the last change was a step recorded by execute()
   bool gesture_ = false;    // between begin_gesture() and end_gesture()

@@ -178,6 +178,16 @@ std::vector<const CurvatureComb*> EvaluatedView::drawn_borders() {
   return refs;
 }
 
+namespace {
+// The live surfaces brought up to the document, told what changed when the document knows.
+std::vector<int> sync_live(LiveSurfaces& live, const Document& doc) {
+  const auto faces = doc.interior_faces_since(live.synced_revision());
+  if (!faces) return live.sync(doc.scene(), doc.revision());
+  const InteriorEdit known{*faces};
+  return live.sync(doc.scene(), doc.revision(), &known);
+}
+}  // namespace
+
 bool EvaluatedView::follow(const Document& doc) {
   if (doc.dragging()) {
     const bool was_fine = !coarse_shown_;
@@ -188,7 +198,7 @@ bool EvaluatedView::follow(const Document& doc) {
              was_fine;
     coarse_revision_ = doc.revision();  // first: a failing sync is not retried every frame
     const uint64_t from = coarse_->synced_revision();
-    const std::vector<int> changed = coarse_->sync(doc.scene(), doc.revision());
+    const std::vector<int> changed = sync_live(*coarse_, doc);
     last_eval_ms_ = coarse_->last_sync_ms();
     gpu_coarse_.update_meshes_and_curves(coarse_->draw());
     follow_curves(doc, *coarse_, from, changed, gpu_coarse_, coarse_curves_serial_);
@@ -202,7 +212,7 @@ bool EvaluatedView::follow(const Document& doc) {
            was_coarse;
   fine_revision_ = doc.revision();
   const uint64_t from = fine_->synced_revision();
-  const std::vector<int> changed = fine_->sync(doc.scene(), doc.revision());
+  const std::vector<int> changed = sync_live(*fine_, doc);
   last_eval_ms_ = fine_->last_sync_ms();
   gpu_fine_.update_meshes_and_curves(fine_->draw());
   follow_curves(doc, *fine_, from, changed, gpu_fine_, fine_curves_serial_);

@@ -1,6 +1,7 @@
 #include "core/eval/scene_evaluation.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <stdexcept>
 
 #include "core/patch/transfinite/ribbon_patch.hpp"
@@ -76,8 +77,14 @@ std::unique_ptr<PatchEvaluator> SceneEvaluation::make_evaluator(std::shared_ptr<
   return std::make_unique<PatchEvaluator>(std::move(patch), std::move(tess), storage_);
 }
 
-SyncStats SceneEvaluation::sync(const Scene& scene) {
+SyncStats SceneEvaluation::sync(const Scene& scene, const InteriorEdit* known) {
   static const Network kNoNetwork;
+  if (known && scene.network && faces_in_place(known->faces))
+    if (const auto up = filling_.update_interior(*scene.network, known->faces)) {
+      SyncStats stats;
+      sync_interior(*up, stats);
+      return stats;
+    }
   // The only step that can refuse the scene comes first: nothing has changed if it throws.
   const FillingUpdate up = filling_.update(scene.network ? *scene.network : kNoNetwork);
   SyncStats stats;
@@ -145,6 +152,32 @@ void SceneEvaluation::sync_faces(const FillingUpdate& up, std::vector<SceneSurfa
     }
     out.push_back(std::move(s));
   }
+}
+
+bool SceneEvaluation::faces_in_place(std::span<const int> faces) const {
+  const std::vector<SceneSurface>& surfaces = surfaces_.surfaces;
+  for (int f : faces)
+    if (f < 0 || std::size_t(f) >= surfaces.size() || surfaces[std::size_t(f)].face != f)
+      return false;
+  return true;
+}
+
+void SceneEvaluation::sync_interior(const FillingUpdate& up, SyncStats& stats) {
+  std::vector<SceneSurface>& surfaces = surfaces_.surfaces;
+  const Network& net = filling_.network();
+  for (int f : up.interior_edited) {
+    SceneSurface& s = surfaces[std::size_t(f)];
+    const uint64_t before = s.evaluator->revision();
+    if (!follow_interior(*s.evaluator, net.faces[f], stats.moved_points)) {
+      const FacePatch fp = filling_.build(f);  // not expected: the patch was interior
+      if (!follow(*s.evaluator, *fp.patch, stats.moved_points))
+        s.evaluator = make_evaluator(fp.patch->clone(), s.evaluator->tessellation().density);
+      s.evaluator->continue_revisions_from(before);
+    }
+    if (s.evaluator->revision() != before) stats.changed_surfaces.push_back(f);
+  }
+  stats.previous_surface.resize(surfaces.size());
+  std::iota(stats.previous_surface.begin(), stats.previous_surface.end(), 0);
 }
 
 void SceneEvaluation::sync_patches(const Scene& scene, std::vector<SceneSurface>& out,

@@ -15,6 +15,10 @@
 //     moves the free points whose offsets changed on the face's patch as it is, without a patch
 //     build: an axpy each with the point's cached influence column (delta phi_p and its
 //     derivatives), then the geometry of the samples it touches;
+//   - when the caller knows an edit changed only GB interior offsets (InteriorEdit: the document
+//     records what each of its revisions changed), only the named faces are looked at: no scan
+//     of the network or of the surface list, so a free-point drag costs the same on 24 or 1,536
+//     faces;
 //   - explicit patches are compared by identity (the document copies a patch on write, and the
 //     evaluation keeps a reference to the one it followed, so an address cannot be reused):
 //     only replaced patches are compared point by point.
@@ -45,6 +49,14 @@ struct SyncStats {
   bool renumbered = false;           // surfaces were added, removed or renumbered
 };
 
+// What an edit changed, when the caller knows it for sure: only the GB interior offsets of these
+// network faces; everything else is as the previous sync saw it. A promise the network does not
+// bear out (a listed face changed in more than its offsets, different counts) is noticed and the
+// sync falls back to comparing everything; anything changed outside the list is not noticed.
+struct InteriorEdit {
+  std::vector<int> faces;
+};
+
 class SceneEvaluation {
  public:
   // Evaluates every surface at `density` (>= 1), keeping each sample as `storage` says. Throws
@@ -58,8 +70,9 @@ class SceneEvaluation {
   SampleStorage storage() const { return storage_; }
 
   // Follows the scene's current state. Throws DataError if the edited network cannot be filled;
-  // the evaluation is then left as it was.
-  SyncStats sync(const Scene& scene);
+  // the evaluation is then left as it was. `known`: what changed since the previous sync, when
+  // the caller knows (above).
+  SyncStats sync(const Scene& scene, const InteriorEdit* known = nullptr);
 
   // Re-evaluates the surfaces whose density differs from densities[i] (one entry per surface,
   // each >= 1) at that density; the others are untouched. New surfaces of later syncs get
@@ -81,6 +94,10 @@ class SceneEvaluation {
   };
   std::unique_ptr<PatchEvaluator> make_evaluator(std::shared_ptr<Patch> patch, int density);
   void sync_faces(const FillingUpdate& up, std::vector<SceneSurface>& out, SyncStats& stats);
+  // Whether each of `faces` is the surface of the same index (no renumbering pending).
+  bool faces_in_place(std::span<const int> faces) const;
+  // The interior edits of update_interior(), in place.
+  void sync_interior(const FillingUpdate& up, SyncStats& stats);
   void sync_patches(const Scene& scene, std::vector<SceneSurface>& out, SyncStats& stats);
 
   TessellationCache cache_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <optional>
 #include <unordered_map>
 #include <utility>
 
@@ -104,6 +105,30 @@ IncrementalFilling::IncrementalFilling(std::optional<FaceScheme> scheme_override
 
 FillingUpdate IncrementalFilling::update(const Network& network) {
   return same_structure(network) ? update_in_place(network) : rebuild(network);
+}
+
+std::optional<FillingUpdate> IncrementalFilling::update_interior(const Network& n,
+                                                                 std::span<const int> faces) {
+  const Network& o = network_;
+  if (n.vertices.size() != o.vertices.size() || n.edges.size() != o.edges.size() ||
+      n.faces.size() != o.faces.size() || n.normals.size() != o.normals.size() ||
+      o.faces.size() != faces_.size())
+    return std::nullopt;
+  std::vector<int> listed(faces.begin(), faces.end());
+  sort_unique(listed);
+  FillingUpdate up;
+  for (int f : listed) {
+    if (f < 0 || f >= static_cast<int>(n.faces.size())) return std::nullopt;
+    const NetworkFace &now = n.faces[f], &was = o.faces[f];
+    if (now == was) continue;  // e.g. dragged back to where it was
+    // Its ribbons depend on the vertices, handles and normals, which the caller says are the
+    // same: the face as filled is the face now, but for the offsets interior_edit() checks.
+    if (now.loop != was.loop || now.name != was.name || !interior_edit(f, faces_[f], now))
+      return std::nullopt;
+    up.interior_edited.push_back(f);
+  }
+  for (int f : up.interior_edited) network_.faces[f].offsets = n.faces[f].offsets;
+  return up;
 }
 
 bool IncrementalFilling::same_structure(const Network& n) const {

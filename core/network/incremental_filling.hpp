@@ -23,6 +23,7 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,7 @@ struct FillingUpdate {
   bool renumbered = false;
   // Per current face: the face index before the update whose patch it keeps unchanged, or -1 when
   // it has a new patch. Without renumbering, face f keeps its own patch unless it is refilled.
+  // Empty after update_interior(): every face keeps its own patch.
   std::vector<int> previous_face;
   // The faces with a new patch, ascending, with their patches (the caller's to keep).
   std::vector<FacePatch> refilled;
@@ -68,6 +70,14 @@ class IncrementalFilling {
   // Follows `network`. Throws DataError (naming the source and the JSON path) when it cannot be
   // validated or filled; the filling is then left exactly as it was.
   FillingUpdate update(const Network& network);
+
+  // The same when the caller knows that `network` differs from the filled copy at most in the
+  // interior offsets of `faces` (a free-point drag step): a cost that follows those faces alone,
+  // no scan of the network. The result lists them in interior_edited and leaves previous_face
+  // empty (every face keeps its patch). None, with nothing changed, when the network does not
+  // bear the promise out (counts, or a listed face changed in more than its offsets or in a way an
+  // interior edit cannot follow): then call update().
+  std::optional<FillingUpdate> update_interior(const Network& network, std::span<const int> faces);
 
   const Network& network() const { return network_; }
   const NetworkTopology& topology() const { return topology_; }

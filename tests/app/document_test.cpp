@@ -8,6 +8,7 @@
 #include "core/eval/scene_evaluation.hpp"
 #include "core/io/scene_io.hpp"
 #include "core/network/network_filling.hpp"
+#include "core/network/sample_networks.hpp"
 #include "core/network_test_util.hpp"
 
 namespace pl::test {
@@ -35,6 +36,46 @@ TEST(Document, DragIsOneUndoStepAndUndoRedoAreExact) {
   ASSERT_TRUE(doc.redo());
   EXPECT_EQ(point_position(doc.scene(), centre), Vec3(0.5, 0.5, 2));
   EXPECT_EQ(doc.undo_label(), "move patch 0 point 4");
+}
+
+// The record an evaluation follows a free-point drag by (SceneEvaluation's InteriorEdit): the
+// faces whose offsets alone changed since a revision, and nothing to go by after anything else.
+TEST(Document, KnowsWhichFacesAFreePointDragChanged) {
+  Scene s;
+  s.network = cube_sphere_network(2, FaceScheme::GB);
+  Document doc(std::move(s));
+  EXPECT_EQ(doc.interior_faces_since(doc.revision()), std::vector<int>{});
+  const uint64_t start = doc.revision();
+  const PointRef centre3 = PointRef::free_point(3, InteriorOffset{.centre = true});
+  const PointRef centre5 = PointRef::free_point(5, InteriorOffset{.centre = true});
+  const Vec3 p3 = point_position(doc.scene(), centre3), p5 = point_position(doc.scene(), centre5);
+  doc.begin_drag({centre3});
+  doc.drag_to({p3 + Vec3(0, 0, 0.01)});
+  doc.drag_to({p3 + Vec3(0, 0, 0.02)});
+  EXPECT_EQ(doc.interior_faces_since(start), std::vector<int>{3});
+  doc.end_drag();  // records the step; the scene is as the last drag step left it
+  const uint64_t after_first = doc.revision();
+  doc.begin_drag({centre5, centre3});
+  doc.drag_to({p5 + Vec3(0.01, 0, 0), p3});
+  EXPECT_EQ(doc.interior_faces_since(after_first), (std::vector<int>{3, 5}));
+  doc.end_drag();
+  // A vertex drag, an undo, a command: anything may have changed.
+  const uint64_t before_vertex = doc.revision();
+  doc.begin_drag({PointRef::vertex(0)});
+  doc.drag_to({doc.scene().network->vertices[0] + Vec3(0.01, 0, 0)});
+  EXPECT_EQ(doc.interior_faces_since(before_vertex), std::nullopt);
+  doc.end_drag();
+  const uint64_t before_undo = doc.revision();
+  ASSERT_TRUE(doc.undo());
+  EXPECT_EQ(doc.interior_faces_since(before_undo), std::nullopt);
+  // Too old, or from the future.
+  const uint64_t now = doc.revision();
+  EXPECT_EQ(doc.interior_faces_since(now + 1), std::nullopt);
+  doc.begin_drag({centre3});
+  for (std::size_t i = 0; i <= Document::kEditRecord; ++i)
+    doc.drag_to({p3 + Vec3(0, 0, 0.001 * double(i))});
+  EXPECT_EQ(doc.interior_faces_since(now), std::nullopt);
+  EXPECT_EQ(doc.interior_faces_since(now + 1), std::vector<int>{3});
 }
 
 TEST(Document, MovingAVertexCarriesItsHandlesAndUndoRestoresThem) {

@@ -112,6 +112,40 @@ TEST(GBFaceInteriorDrag, OneFreePointMoveIsOneColumnAndEqualsAFreshEvaluation) {
   }
 }
 
+TEST(GBFaceInteriorDrag, ToldWhichFacesChangedItLooksAtThoseAloneAndAgreesWithAFreshEvaluation) {
+  Scene s = load("gb-hole-filling.json");
+  Network& net = *s.network;
+  for (int f : {0, 1}) net.faces[f].scheme = FaceScheme::GB, net.faces[f].degree = 6;
+  const double size = test::network_size(net);
+  SceneEvaluation told(s, 12, std::nullopt), scanned(s, 12, std::nullopt);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-0.05, 0.05);
+  for (int step = 0; step < 30; ++step) {
+    const int face = step % 2;
+    InteriorOffset o = free_names(int(net.faces[face].loop.size()), 6)[rng() % 5];
+    o.by = Vec3(u(rng), u(rng), u(rng)) * size;
+    add_offset(net.faces[face], o);
+    const InteriorEdit known{{face}};
+    const SyncStats a = told.sync(s, &known), b = scanned.sync(s);
+    EXPECT_EQ(a.changed_surfaces, b.changed_surfaces);
+    EXPECT_EQ(a.moved_points, b.moved_points);
+    EXPECT_EQ(a.previous_surface, b.previous_surface);
+    EXPECT_FALSE(a.renumbered);
+  }
+  EXPECT_LT(largest_difference(told, scanned, size), 1e-15);
+  EXPECT_LT(largest_difference(told, SceneEvaluation(s, 12, std::nullopt), size), 1e-12);
+  // A promise the network does not bear out is noticed: the face's degree changed too, or a
+  // listed face that does not exist. Both fall back to comparing everything.
+  net.faces[0].degree = 5;
+  net.faces[0].offsets.clear();
+  const InteriorEdit wrong{{0}};
+  const SyncStats st = told.sync(s, &wrong);
+  EXPECT_EQ(st.rebuilt_surfaces, 1u);
+  const InteriorEdit nowhere{{999}};
+  told.sync(s, &nowhere);
+  EXPECT_LT(largest_difference(told, SceneEvaluation(s, 12, std::nullopt), size), 1e-12);
+}
+
 // What is not only an offset change is a refill: the degree, and the first offset of a plain
 // degree-3 face (its patch was not the interior form).
 TEST(GBFaceInteriorDrag, DegreeChangesAndFirstOffsetsRefill) {

@@ -128,9 +128,10 @@ void LiveSurfaces::update_meshes(const SyncStats& stats) {
     if (changed[i]) draw_.surfaces[i] = make_surface_mesh(*surfaces[i].evaluator, surfaces[i].name);
 }
 
-std::vector<int> LiveSurfaces::sync(const Scene& scene, uint64_t revision) {
+std::vector<int> LiveSurfaces::sync(const Scene& scene, uint64_t revision,
+                                    const InteriorEdit* known) {
   const auto t0 = std::chrono::steady_clock::now();
-  const SyncStats stats = evaluation_.sync(scene);
+  const SyncStats stats = evaluation_.sync(scene, known);
   update_meshes(stats);
   if (stats.renumbered || !update_overlays(scene, stats.changed_surfaces)) rebuild_overlays(scene);
   revision_ = revision;

@@ -30,8 +30,9 @@ class LiveSurfaces {
 
   // Brings the evaluation up to `scene` (revision `revision` of the document). Returns the
   // indices of surfaces whose meshes (and patches) changed. Throws DataError when the edited
-  // network cannot be filled; the previous state is kept.
-  std::vector<int> sync(const Scene& scene, uint64_t revision);
+  // network cannot be filled; the previous state is kept. `known`: what changed since the
+  // previous sync when the document knows it (SceneEvaluation::sync).
+  std::vector<int> sync(const Scene& scene, uint64_t revision, const InteriorEdit* known = nullptr);
 
   // Evaluates surface i at densities[i] (one per surface) where that differs from its density
   // now; returns the surfaces re-evaluated.
