@@ -16,6 +16,8 @@
 #include <oneapi/tbb/partitioner.h>
 
 #include <cstddef>
+#include <exception>
+#include <vector>
 
 namespace pl {
 
@@ -35,6 +37,25 @@ void parallel_chunks(std::size_t n, std::size_t grain, Body&& body) {
       oneapi::tbb::blocked_range<std::size_t>(0, n, grain),
       [&](const oneapi::tbb::blocked_range<std::size_t>& r) { body(r.begin(), r.end()); },
       oneapi::tbb::simple_partitioner());
+}
+
+// body(i) for every i in [0, n), `grain` indices a task, as parallel_chunks runs them. Every
+// index runs even when some throw; then the exception of the lowest index is rethrown, so the
+// message a caller reports (the first bad face of a scene) is the same on any number of threads.
+template <class Body>
+void parallel_each(std::size_t n, std::size_t grain, Body&& body) {
+  std::vector<std::exception_ptr> errors(n);
+  parallel_chunks(n, grain, [&](std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last; ++i) {
+      try {
+        body(i);
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+    }
+  });
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
 }
 
 }  // namespace pl

@@ -1,5 +1,7 @@
 #include "core/eval/scene_surfaces.hpp"
 
+#include "core/base/parallel_for.hpp"
+
 namespace pl {
 
 SceneSurfaces evaluate_scene(const Scene& scene, int density, std::optional<FaceScheme> scheme,
@@ -10,8 +12,12 @@ SceneSurfaces evaluate_scene(const Scene& scene, int density, std::optional<Face
     const NetworkTopology topo = validate_network(*scene.network, source);
     NetworkFilling filling = fill_network(*scene.network, topo, scheme, source);
     out.projected_vertices = std::move(filling.projected_vertices);
-    for (FacePatch& fp : filling.faces) {
-      SceneSurface s;
+    // Faces evaluated side by side over the cores (each evaluation also splits its samples): a
+    // network of many small faces is not a queue of small parallel loops.
+    out.surfaces.resize(filling.faces.size());
+    parallel_each(filling.faces.size(), 1, [&](std::size_t i) {
+      FacePatch& fp = filling.faces[i];
+      SceneSurface& s = out.surfaces[i];
       const auto& face = scene.network->faces[fp.face];
       s.name = face.name.empty() ? "face" + std::to_string(fp.face) : face.name;
       s.face = fp.face;
@@ -19,8 +25,7 @@ SceneSurfaces evaluate_scene(const Scene& scene, int density, std::optional<Face
       auto tess = cache.get(fp.patch->domain(), density);
       s.evaluator = std::make_unique<PatchEvaluator>(std::move(fp.patch), std::move(tess),
                                                      SampleStorage::Jets, pool);
-      out.surfaces.push_back(std::move(s));
-    }
+    });
     out.shared_edges = shared_edges_of(topo, out.surfaces);
   }
   for (std::size_t i = 0; i < scene.patches.size(); ++i) {

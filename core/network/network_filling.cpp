@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
 
 #include "core/base/data_error.hpp"
+#include "core/base/parallel_for.hpp"
 #include "core/network/face_ribbons.hpp"
 #include "core/network/gb_face.hpp"
 #include "core/network/gb_face_interior.hpp"
@@ -104,9 +106,15 @@ NetworkFilling fill_network(const Network& network, const NetworkTopology& topol
   } catch (const DataError& e) {
     throw DataError(source, e.where(), e.message());  // the construction does not know the file
   }
-  for (std::size_t f = 0; f < network.faces.size(); ++f)
-    out.faces.push_back(
-        build_face_patch(static_cast<int>(f), schemes[f], ribbons[f], network.faces[f], source));
+  // The faces' patches are independent: built over the cores (a GB face's domain and patch take
+  // about 0.2 ms), the first bad face reported whatever the number of threads.
+  std::vector<std::optional<FacePatch>> built(network.faces.size());
+  parallel_each(built.size(), 8, [&](std::size_t f) {
+    built[f] =
+        build_face_patch(static_cast<int>(f), schemes[f], ribbons[f], network.faces[f], source);
+  });
+  out.faces.reserve(built.size());
+  for (auto& fp : built) out.faces.push_back(std::move(*fp));
   return out;
 }
 

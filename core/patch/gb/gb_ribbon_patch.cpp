@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/patch/gb/blend.hpp"
+#include "core/patch/gb/shared_basis.hpp"
 #include "core/patch/gb/vertex_limits.hpp"
 
 namespace pl {
@@ -121,6 +122,34 @@ struct RibbonLocal {
 };
 
 }  // namespace
+
+void GBRibbonPatch::evaluate_many(std::span<const Vec2> xs, std::span<SurfaceJet> out) const {
+  std::string layout = kType;
+  layout += '|';
+  layout += domain_.key();
+  for (std::size_t i = 0; i < degree_.size(); ++i) {
+    layout += '|';
+    layout += std::to_string(degree_[i]);
+    layout += ',';
+    layout += std::to_string(layers_[i]);
+  }
+  const std::size_t width = size();
+  const auto block =
+      shared_basis_block(layout, xs, width, [this](Vec2 x, std::span<Jet> row) { basis(x, row); });
+  // Relative to one control point, so that a far-away patch does not round its offsets away.
+  // Without a kept block the basis is evaluated here, the same numbers summed the same way: a
+  // face's samples do not depend on whether another face asked for its block before.
+  const Vec3 origin = points_[0];
+  std::vector<Jet> own(block ? 0 : width);
+  for (std::size_t i = 0; i < xs.size(); ++i) {
+    if (!block) basis(xs[i], own);
+    const Jet* phi = block ? block->data() + i * width : own.data();
+    SurfaceJet s;
+    for (std::size_t k = 0; k < width; ++k) add_scaled(s, phi[k], points_[k] - origin);
+    s.p += origin;
+    out[i] = s;
+  }
+}
 
 void GBRibbonPatch::basis(Vec2 x, std::span<Jet> out) const {
   const int n = sides();

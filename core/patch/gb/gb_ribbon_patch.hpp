@@ -55,6 +55,11 @@ class GBRibbonPatch final : public PatchType<GBRibbonPatch> {
   // sum b C / sum b summed directly (power tables per ribbon, no heap allocation per sample);
   // equal to the basis() sum up to rounding, and the basis() corner limits at the vertices.
   SurfaceJet evaluate(Vec2 x) const override;
+  // sum phi_k C_k over the basis at each point: the basis kept for a block of points that
+  // another patch of the same domain and layout asked for before (the convex faces of a network
+  // at one density: shared_basis.hpp), else evaluated here; the same numbers either way. Agrees
+  // with evaluate() to rounding.
+  void evaluate_many(std::span<const Vec2> xs, std::span<SurfaceJet> out) const override;
   std::vector<BezierCurve> boundary_curves() const override;
 
   int sides() const { return static_cast<int>(degree_.size()); }
