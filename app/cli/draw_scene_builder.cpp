@@ -5,6 +5,7 @@
 #include <map>
 
 #include "core/analysis/curve_analysis.hpp"
+#include "core/base/parallel_for.hpp"
 #include "core/patch/control_net_topology.hpp"
 #include "core/patch/side_curve.hpp"
 
@@ -180,8 +181,11 @@ DrawScene build_draw_scene(const Scene& scene, const SceneSurfaces& surfaces, in
   const std::vector<int> per_span = free_curves_samples_per_span(scene.curves);
   for (std::size_t i = 0; i < scene.curves.size(); ++i)
     append_free_curve(d, scene.curves[i], comb_teeth, per_span[i]);
+  d.surfaces.resize(surfaces.surfaces.size());
+  parallel_each(d.surfaces.size(), 4, [&](std::size_t i) {
+    d.surfaces[i] = make_surface_mesh(*surfaces.surfaces[i].evaluator, surfaces.surfaces[i].name);
+  });
   for (const SceneSurface& s : surfaces.surfaces) {
-    d.surfaces.push_back(make_surface_mesh(*s.evaluator, s.name));
     for (CurvatureComb& c : surface_borders(s, comb_teeth)) {
       d.borders.push_back(c.points);
       if (comb_teeth > 0) {

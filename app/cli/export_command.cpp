@@ -9,6 +9,7 @@
 #include "app/cli/progress_line.hpp"
 #include "app/cli/scene_outputs.hpp"
 #include "app/cli/work_limits.hpp"
+#include "core/base/parallel_for.hpp"
 #include "core/cad/cad_export.hpp"
 #include "core/io/input_limits.hpp"
 #include "core/io/json_node.hpp"
@@ -56,9 +57,10 @@ MeshExportCount export_mesh_file(const Scene& scene, const std::filesystem::path
   const MeshFormat format = mesh_format_for(target);  // an unknown format before any work
   TessellationCache cache;
   const SceneSurfaces surfaces = evaluate_checked(scene, density, scheme, cache, source);
-  std::vector<SurfaceMesh> meshes;
-  for (const SceneSurface& s : surfaces.surfaces)
-    meshes.push_back(make_surface_mesh(*s.evaluator, s.name));
+  std::vector<SurfaceMesh> meshes(surfaces.surfaces.size());
+  parallel_each(meshes.size(), 4, [&](std::size_t i) {
+    meshes[i] = make_surface_mesh(*surfaces.surfaces[i].evaluator, surfaces.surfaces[i].name);
+  });
   std::vector<CurvePolyline> polylines;
   if (format == MeshFormat::Obj)
     for (std::size_t i = 0; i < scene.curves.size(); ++i)

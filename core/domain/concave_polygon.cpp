@@ -4,6 +4,9 @@
 #include <cassert>
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <mutex>
+#include <optional>
 #include <stdexcept>
 
 #include "core/domain/polygon_triangulation.hpp"
@@ -32,6 +35,39 @@ bool inside(const std::vector<Vec2>& poly, Vec2 x) {
         x.x < poly[j].x + (x.y - poly[j].y) * (poly[i].x - poly[j].x) / (poly[i].y - poly[j].y))
       in = !in;
   return in;
+}
+
+// The interior point's grid search costs about 17,000 segment distances for a quad, and a
+// network builds the same polygon (the regular n-gon) for every convex face: the result is
+// remembered by the vertices' exact coordinates, for the last few hundred polygons.
+class InteriorMemo {
+ public:
+  std::optional<Vec2> find(const std::vector<Vec2>& v) {
+    std::lock_guard lock(mutex_);
+    const auto it = memo_.find(key(v));
+    if (it == memo_.end()) return std::nullopt;
+    return it->second;
+  }
+  void keep(const std::vector<Vec2>& v, Vec2 interior) {
+    std::lock_guard lock(mutex_);
+    if (memo_.size() >= 256) memo_.clear();
+    memo_.emplace(key(v), interior);
+  }
+
+ private:
+  static std::vector<double> key(const std::vector<Vec2>& v) {
+    std::vector<double> k;
+    k.reserve(2 * v.size());
+    for (const Vec2& p : v) k.push_back(p.x), k.push_back(p.y);
+    return k;
+  }
+  std::mutex mutex_;
+  std::map<std::vector<double>, Vec2> memo_;
+};
+
+InteriorMemo& interior_memo() {
+  static InteriorMemo memo;
+  return memo;
 }
 
 }  // namespace
@@ -66,6 +102,10 @@ ConcavePolygonDomain::ConcavePolygonDomain(std::vector<Vec2> vertices)
   }
   if (!(area() > 0)) throw std::invalid_argument("polygon domain is not counter-clockwise");
   // A point well inside: the interior point farthest from the boundary among a grid's points.
+  if (const auto known = interior_memo().find(vertices_)) {
+    interior_ = *known;
+    return;
+  }
   Vec2 lo = vertices_[0], hi = vertices_[0];
   for (const Vec2& v : vertices_) lo = glm::min(lo, v), hi = glm::max(hi, v);
   double best = -1;
@@ -79,6 +119,7 @@ ConcavePolygonDomain::ConcavePolygonDomain(std::vector<Vec2> vertices)
       if (d > best) best = d, interior_ = x;
     }
   if (!(best > 0)) throw std::invalid_argument("polygon domain is too thin");
+  interior_memo().keep(vertices_, interior_);
 }
 
 const Vec2& ConcavePolygonDomain::vertex(int i) const {

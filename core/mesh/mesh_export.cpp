@@ -12,8 +12,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <functional>
+#include <string>
+#include <vector>
 
 #include "core/base/data_error.hpp"
+#include "core/base/parallel_for.hpp"
 #include "core/io/atomic_file.hpp"
 #include "core/mesh/finite_check.hpp"
 
@@ -51,9 +55,9 @@ class NumberLine {
     return *this;
   }
   NumberLine& operator<<(const Vec3& p) { return *this << p.x << p.y << p.z; }
-  void write(std::FILE* f) {
+  void append_to(std::string& out) {
     *end_++ = '\n';
-    std::fwrite(buf_, 1, end_ - buf_, f);
+    out.append(buf_, end_);
   }
 
  private:
@@ -64,16 +68,45 @@ class NumberLine {
   char* end_;
 };
 
-// " i" for each index from `first` on, `count` of them, and the end of the line.
-void write_indices(std::FILE* f, std::size_t first, std::size_t count) {
+// Appends i (and a separator before it) to out.
+void append_index(std::string& out, char before, std::size_t i) {
   char buf[32];
-  for (std::size_t i = first; i < first + count; ++i) {
-    buf[0] = ' ';
-    char* end = std::to_chars(buf + 1, buf + sizeof buf, i).ptr;
-    std::fwrite(buf, 1, end - buf, f);
-  }
-  std::fputc('\n', f);
+  buf[0] = before;
+  out.append(buf, std::to_chars(buf + 1, buf + sizeof buf, i).ptr);
 }
+
+// A text file in pieces, each formatted on its own into a string: the pieces of a batch are
+// formatted over the cores and written in their order, so the file is the same bytes as one
+// thread would write, with at most a batch of text (kBatch pieces of at most kLines lines) held
+// at once.
+class OrderedText {
+ public:
+  static constexpr std::size_t kLines = 4096, kBatch = 64;
+
+  void add(std::function<void(std::string&)> piece) { pieces_.push_back(std::move(piece)); }
+  // One piece per kLines of `count` lines, line(i, out) appending line i.
+  template <class Line>
+  void add_lines(std::size_t count, Line line) {
+    for (std::size_t b = 0; b < count; b += kLines)
+      add([line, b, e = std::min(count, b + kLines)](std::string& out) {
+        for (std::size_t i = b; i < e; ++i) line(i, out);
+      });
+  }
+  void write(std::FILE* f) const {
+    std::vector<std::string> text(kBatch);
+    for (std::size_t b = 0; b < pieces_.size(); b += kBatch) {
+      const std::size_t e = std::min(pieces_.size(), b + kBatch);
+      parallel_each(e - b, 1, [&](std::size_t i) {
+        text[i].clear();
+        pieces_[b + i](text[i]);
+      });
+      for (std::size_t i = 0; i < e - b; ++i) std::fwrite(text[i].data(), 1, text[i].size(), f);
+    }
+  }
+
+ private:
+  std::vector<std::function<void(std::string&)>> pieces_;
+};
 
 // The facet normal: the triangle's own, or where the triangle has no area (two samples coincide,
 // as at the pole of a sphere) the mean of its three exact vertex normals, the limit of the facet
@@ -89,25 +122,48 @@ Vec3 facet_normal(const SurfaceMesh& m, const std::array<uint32_t, 3>& t) {
 
 void write_obj(const std::vector<SurfaceMesh>& meshes, const std::vector<CurvePolyline>& polylines,
                std::FILE* f) {
-  std::fprintf(f, "# PatchLab %s\n", PATCHLAB_VERSION);
+  OrderedText text;
+  text.add([](std::string& out) { out += std::string("# PatchLab ") + PATCHLAB_VERSION + "\n"; });
   std::size_t base = 1;
   for (const SurfaceMesh& m : meshes) {
-    std::fprintf(f, "o %s\n", m.name.c_str());
-    for (const Vec3& p : m.positions) (NumberLine("v") << p).write(f);
-    for (const Vec3& n : m.normals) (NumberLine("vn") << n).write(f);
-    for (const auto& t : m.triangles) {
-      const std::size_t a = t[0] + base, b = t[1] + base, c = t[2] + base;
-      std::fprintf(f, "f %zu//%zu %zu//%zu %zu//%zu\n", a, a, b, b, c, c);
-    }
+    text.add([&m](std::string& out) { out += "o " + m.name + "\n"; });
+    text.add_lines(m.positions.size(), [&m](std::size_t i, std::string& out) {
+      (NumberLine("v") << m.positions[i]).append_to(out);
+    });
+    text.add_lines(m.normals.size(), [&m](std::size_t i, std::string& out) {
+      (NumberLine("vn") << m.normals[i]).append_to(out);
+    });
+    text.add_lines(m.triangles.size(), [&m, base](std::size_t i, std::string& out) {
+      out += 'f';
+      for (uint32_t v : m.triangles[i]) {  // " a//a": position and normal a
+        append_index(out, ' ', v + base);
+        out += '/';
+        append_index(out, '/', v + base);
+      }
+      out += '\n';
+    });
     base += m.positions.size();
   }
   for (const CurvePolyline& l : polylines) {
-    std::fprintf(f, "o %s\n", l.name.c_str());
-    for (const Vec3& p : l.points) (NumberLine("v") << p).write(f);
-    std::fputc('l', f);
-    write_indices(f, base, l.points.size());
+    text.add([&l](std::string& out) { out += "o " + l.name + "\n"; });
+    text.add_lines(l.points.size(), [&l](std::size_t i, std::string& out) {
+      (NumberLine("v") << l.points[i]).append_to(out);
+    });
+    text.add([&l, base](std::string& out) {
+      out += 'l';
+      for (std::size_t i = 0; i < l.points.size(); ++i) append_index(out, ' ', base + i);
+      out += '\n';
+    });
     base += l.points.size();
   }
+  text.write(f);
+}
+
+// "3 a b c" for triangle i of m, its indices offset by base.
+void append_triangle(std::string& out, const SurfaceMesh& m, std::size_t i, std::size_t base) {
+  out += '3';
+  for (uint32_t v : m.triangles[i]) append_index(out, ' ', v + base);
+  out += '\n';
 }
 
 void write_ply(const std::vector<SurfaceMesh>& meshes, std::FILE* f) {
@@ -122,17 +178,21 @@ void write_ply(const std::vector<SurfaceMesh>& meshes, std::FILE* f) {
                "property double k_min\nproperty double k_max\n"
                "element face %zu\nproperty list uchar uint vertex_indices\nend_header\n",
                PATCHLAB_VERSION, nv, nf);
+  OrderedText text;
   for (const SurfaceMesh& m : meshes)
-    for (std::size_t i = 0; i < m.positions.size(); ++i) {
-      const Vec3 &p = m.positions[i], &n = m.normals[i];
-      (NumberLine("") << p << n << m.mean[i] << m.gaussian[i] << m.kmin[i] << m.kmax[i]).write(f);
-    }
+    text.add_lines(m.positions.size(), [&m](std::size_t i, std::string& out) {
+      (NumberLine("") << m.positions[i] << m.normals[i] << m.mean[i] << m.gaussian[i] << m.kmin[i]
+                      << m.kmax[i])
+          .append_to(out);
+    });
   std::size_t base = 0;
   for (const SurfaceMesh& m : meshes) {
-    for (const auto& t : m.triangles)
-      std::fprintf(f, "3 %zu %zu %zu\n", t[0] + base, t[1] + base, t[2] + base);
+    text.add_lines(m.triangles.size(), [&m, base](std::size_t i, std::string& out) {
+      append_triangle(out, m, i, base);
+    });
     base += m.positions.size();
   }
+  text.write(f);
 }
 
 // OFF: positions and triangles, all patches in one mesh (OFF has no objects).
@@ -140,14 +200,19 @@ void write_off(const std::vector<SurfaceMesh>& meshes, std::FILE* f) {
   std::size_t nv = 0, nf = 0;
   for (const SurfaceMesh& m : meshes) nv += m.positions.size(), nf += m.triangles.size();
   std::fprintf(f, "OFF\n%zu %zu 0\n", nv, nf);
+  OrderedText text;
   for (const SurfaceMesh& m : meshes)
-    for (const Vec3& p : m.positions) (NumberLine("") << p).write(f);
+    text.add_lines(m.positions.size(), [&m](std::size_t i, std::string& out) {
+      (NumberLine("") << m.positions[i]).append_to(out);
+    });
   std::size_t base = 0;
   for (const SurfaceMesh& m : meshes) {
-    for (const auto& t : m.triangles)
-      std::fprintf(f, "3 %zu %zu %zu\n", t[0] + base, t[1] + base, t[2] + base);
+    text.add_lines(m.triangles.size(), [&m, base](std::size_t i, std::string& out) {
+      append_triangle(out, m, i, base);
+    });
     base += m.positions.size();
   }
+  text.write(f);
 }
 
 // Binary STL (little-endian, single precision by definition): an 80-byte header, the facet

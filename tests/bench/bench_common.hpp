@@ -61,5 +61,6 @@ void bench_curve(const Options& options);
 void bench_curve_scale(const Options& options);
 void bench_grains(const Options& options);
 void bench_schemes(const Options& options);
+void bench_scene_commands(const Options& options);
 
 }  // namespace pl::bench

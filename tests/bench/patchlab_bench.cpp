@@ -50,5 +50,6 @@ int main(int argc, char** argv) {
   run("curve", pl::bench::bench_curve);
   run("curve_scale", pl::bench::bench_curve_scale);
   run("schemes", pl::bench::bench_schemes);
+  run("scene_commands", pl::bench::bench_scene_commands);
   return 0;
 }
