@@ -115,16 +115,8 @@ void SceneEvaluation::sync_faces(const FillingUpdate& up, std::vector<SceneSurfa
       const std::string name = face_name(net, f);
       bool changed = from != f || s.name != name;
       s.name = name;
-      if (std::binary_search(up.interior_edited.begin(), up.interior_edited.end(), f)) {
-        const uint64_t before = s.evaluator->revision();
-        if (!follow_interior(*s.evaluator, net.faces[f], stats.moved_points)) {
-          const FacePatch fp = filling_.build(f);  // not expected: the patch was interior
-          if (!follow(*s.evaluator, *fp.patch, stats.moved_points))
-            s.evaluator = make_evaluator(fp.patch->clone(), s.evaluator->tessellation().density);
-          s.evaluator->continue_revisions_from(before);
-        }
-        changed = changed || s.evaluator->revision() != before;
-      }
+      if (std::binary_search(up.interior_edited.begin(), up.interior_edited.end(), f))
+        changed = follow_offsets(s, f, stats) || changed;
       if (changed) stats.changed_surfaces.push_back(f);
       stats.previous_surface.push_back(from);
       out.push_back(std::move(s));
@@ -162,20 +154,21 @@ bool SceneEvaluation::faces_in_place(std::span<const int> faces) const {
   return true;
 }
 
+bool SceneEvaluation::follow_offsets(SceneSurface& s, int f, SyncStats& stats) {
+  const uint64_t before = s.evaluator->revision();
+  if (!follow_interior(*s.evaluator, filling_.network().faces[f], stats.moved_points)) {
+    const FacePatch fp = filling_.build(f);  // not expected: the patch was interior
+    if (!follow(*s.evaluator, *fp.patch, stats.moved_points))
+      s.evaluator = make_evaluator(fp.patch->clone(), s.evaluator->tessellation().density);
+    s.evaluator->continue_revisions_from(before);
+  }
+  return s.evaluator->revision() != before;
+}
+
 void SceneEvaluation::sync_interior(const FillingUpdate& up, SyncStats& stats) {
   std::vector<SceneSurface>& surfaces = surfaces_.surfaces;
-  const Network& net = filling_.network();
-  for (int f : up.interior_edited) {
-    SceneSurface& s = surfaces[std::size_t(f)];
-    const uint64_t before = s.evaluator->revision();
-    if (!follow_interior(*s.evaluator, net.faces[f], stats.moved_points)) {
-      const FacePatch fp = filling_.build(f);  // not expected: the patch was interior
-      if (!follow(*s.evaluator, *fp.patch, stats.moved_points))
-        s.evaluator = make_evaluator(fp.patch->clone(), s.evaluator->tessellation().density);
-      s.evaluator->continue_revisions_from(before);
-    }
-    if (s.evaluator->revision() != before) stats.changed_surfaces.push_back(f);
-  }
+  for (int f : up.interior_edited)
+    if (follow_offsets(surfaces[std::size_t(f)], f, stats)) stats.changed_surfaces.push_back(f);
   stats.previous_surface.resize(surfaces.size());
   std::iota(stats.previous_surface.begin(), stats.previous_surface.end(), 0);
 }

@@ -96,6 +96,8 @@ class SceneEvaluation {
   void sync_faces(const FillingUpdate& up, std::vector<SceneSurface>& out, SyncStats& stats);
   // Whether each of `faces` is the surface of the same index (no renumbering pending).
   bool faces_in_place(std::span<const int> faces) const;
+  // Moves face f's free points to its offsets now (an interior edit); whether its samples changed.
+  bool follow_offsets(SceneSurface& s, int f, SyncStats& stats);
   // The interior edits of update_interior(), in place.
   void sync_interior(const FillingUpdate& up, SyncStats& stats);
   void sync_patches(const Scene& scene, std::vector<SceneSurface>& out, SyncStats& stats);
