@@ -19,6 +19,7 @@
 #include "core/patch/interpolating_patch.hpp"
 #include "core/patch/nurbs_patch.hpp"
 #include "core/patch/pair_join_patch.hpp"
+#include "core/patch/transfinite/ribbon_patch.hpp"
 
 namespace pl {
 
@@ -212,6 +213,34 @@ ControlNetTopology gb_ribbon_net(const GBRibbonPatch& p) {
   return positions_only(p.size(), std::move(s));
 }
 
+// An explicit-ribbon patch: each side's curve as a polyline of positions; its cross derivative's
+// control vectors are vectors, not positions. Where the curve and the cross derivative are Bézier
+// curves of one degree d (every network face, and most files), vector j is drawn as an arrow from
+// the curve's point j to P_j + D_j / d, the ribbon's inner Bézier row (the Chiyokura–Kimura inner
+// points of a network face); otherwise the vectors are not drawn.
+ControlNetTopology ribbon_net(const RibbonPatch& p) {
+  ControlNetTopology t;
+  t.is_vector.assign(p.size(), false);
+  std::vector<Segment> s;
+  std::size_t k = 0;
+  for (const RibbonSide& side : p.sides()) {
+    const std::size_t curve = k, nc = side.curve.points.size();
+    const std::size_t cross = curve + nc, nx = side.cross.points.size();
+    k = cross + nx;
+    for (std::size_t j = 0; j + 1 < nc; ++j) s.push_back({u32(curve + j), u32(curve + j + 1)});
+    const bool arrows = side.curve.type == CurveType::Bezier &&
+                        side.cross.type == CurveType::Bezier && nc == nx && nc >= 2;
+    for (std::size_t j = 0; j < nx; ++j) {
+      t.is_vector[cross + j] = true;
+      if (arrows)
+        t.arrows.push_back(
+            {u32(curve + j), u32(cross + j), 1.0 / double(nc - 1), ArrowKind::Tangent});
+    }
+  }
+  t.segments = normalised(std::move(s));
+  return t;
+}
+
 ControlNetTopology catmull_clark_net(const CatmullClarkPatch& p) {
   std::vector<Segment> s;
   for (const std::vector<int>& face : p.limit().faces())
@@ -235,6 +264,7 @@ ControlNetTopology control_net_topology(const Patch& patch) {
   if (const auto* p = dynamic_cast<const GBRibbonPatch*>(&patch)) return gb_ribbon_net(*p);
   if (const auto* p = dynamic_cast<const GBInteriorPatch*>(&patch)) return gb_interior_net(*p);
   if (const auto* p = dynamic_cast<const CatmullClarkPatch*>(&patch)) return catmull_clark_net(*p);
+  if (const auto* p = dynamic_cast<const RibbonPatch*>(&patch)) return ribbon_net(*p);
   return positions_only(patch.size(), {});
 }
 

@@ -27,6 +27,7 @@ class GBInteriorPatch;
 class CatmullClarkPatch;
 class PairJoinPatch;
 class GapFillPatch;
+class RibbonPatch;
 
 enum class ArrowKind { Tangent, Twist };
 
@@ -87,5 +88,9 @@ ControlNetTopology gb_interior_net(const GBInteriorPatch& p);
 ControlNetTopology gb_ribbon_net(const GBRibbonPatch& p);
 // The base mesh's edges (the cage).
 ControlNetTopology catmull_clark_net(const CatmullClarkPatch& p);
+// Each side's curve a polyline; the cross derivatives' control vectors arrows from the curve's
+// points to the ribbon's inner Bézier row where curve and cross derivative share one Bézier
+// degree, else hidden.
+ControlNetTopology ribbon_net(const RibbonPatch& p);
 
 }  // namespace pl

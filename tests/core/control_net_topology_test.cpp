@@ -8,10 +8,13 @@
 #include <filesystem>
 #include <set>
 
+#include "core/domain/tessellation_cache.hpp"
+#include "core/eval/scene_surfaces.hpp"
 #include "core/io/scene_io.hpp"
 #include "core/patch/bezier_patch.hpp"
 #include "core/patch/coons_network_patch.hpp"
 #include "core/patch/gb/gb_patch.hpp"
+#include "core/patch/gb/gb_ribbon_patch.hpp"
 #include "core/patch/gregory_quad.hpp"
 #include "core/patch/gregory_tri.hpp"
 #include "core/patch/hermite_patch.hpp"
@@ -164,6 +167,43 @@ TEST(ControlNetTopology, CoonsArrowsEndAtTheBezierHandlesOfOneCell) {
       EXPECT_DOUBLE_EQ(a.scale, 0.7 * 1.9 / 9);
     }
   }
+}
+
+// A network face filled by a ribbon scheme: its sides' curves are polylines, its cross
+// derivatives are vectors (never drawn as positions), and their arrows end at the ribbons' inner
+// Bézier rows: the same points as the inner row of the face's GB ribbons (layer 1), which the GB
+// patch of the same face holds as positions.
+TEST(ControlNetTopology, RibbonArrowsEndAtTheInnerRowsOfTheFacesRibbons) {
+  const Scene scene = read_scene(kAssets / "gb-hole-filling.json");
+  TessellationCache cache;
+  const SceneSurfaces ribbons = evaluate_scene(scene, 2, FaceScheme::SideBased, cache, "s");
+  const SceneSurfaces gb = evaluate_scene(scene, 2, FaceScheme::GB, cache, "s");
+  ASSERT_EQ(ribbons.surfaces.size(), gb.surfaces.size());
+  std::size_t checked = 0;
+  for (std::size_t f = 0; f < ribbons.surfaces.size(); ++f) {
+    const Patch& p = ribbons.surfaces[f].evaluator->patch();
+    const auto* g = dynamic_cast<const GBRibbonPatch*>(&gb.surfaces[f].evaluator->patch());
+    ASSERT_EQ(p.type(), "ribbons");
+    ASSERT_NE(g, nullptr);
+    const ControlNetTopology t = control_net_topology(p);
+    expect_well_formed(p, t, "face " + std::to_string(f));
+    const int n = g->sides();
+    ASSERT_EQ(t.arrows.size(), std::size_t(4 * n));  // cubic curves, cubic cross derivatives
+    std::size_t vectors = 0;
+    for (bool v : t.is_vector) vectors += v;
+    EXPECT_EQ(vectors, std::size_t(4 * n));
+    for (std::size_t a = 0; a < t.arrows.size(); ++a) {
+      const int side = int(a / 4), j = int(a % 4);
+      // The GB patch's side for the same face side.
+      const auto& rs = ribbons.surfaces[f].patch_side;
+      const int face_side = int(std::find(rs.begin(), rs.end(), side) - rs.begin());
+      ASSERT_LT(face_side, n);
+      const Vec3 inner = g->point(gb.surfaces[f].patch_side[std::size_t(face_side)], j, 1);
+      EXPECT_LT(glm::length(arrow_tip(p, t.arrows[a]) - inner), 1e-12) << f << " " << a;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 50u);
 }
 
 }  // namespace
