@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "core/base/parallel_for.hpp"
+#include "core/patch/transfinite/ribbon_patch.hpp"
 
 namespace pl {
 
@@ -42,6 +43,9 @@ PatchEvaluator::PatchEvaluator(std::shared_ptr<Patch> patch,
       storage_(storage),
       pool_(std::move(pool)) {
   assert(patch_ && tessellation_);
+  const auto* ribbons = dynamic_cast<const RibbonPatch*>(patch_.get());
+  domain_follows_points_ = ribbons && ribbons->domain_follows_curves();
+  if (domain_follows_points_) domain_key_ = patch_->domain().key();
   const std::size_t n = tessellation_->points.size();
   SampleBuffers b = pool_ ? pool_->take(n, storage_) : SampleBuffers::fresh(n, storage_);
   jets_ = std::move(b.jets);
@@ -215,8 +219,28 @@ void PatchEvaluator::prepare_influence(std::size_t k) {
   if (storage_ == SampleStorage::Jets) column(k);  // compact samples are evaluated again
 }
 
+std::size_t PatchEvaluator::reevaluate_moved(std::span<const PointMove> moves) {
+  for (const PointMove& m : moves) patch_->set_control_point(m.k, m.p);
+  const Domain& domain = patch_->domain();
+  if (std::string key = domain.key(); key != domain_key_) {
+    domain_key_ = std::move(key);
+    tessellation_ = std::make_shared<const Tessellation>(domain.tessellate(tessellation_->density));
+    const std::size_t n = tessellation_->points.size();
+    SampleBuffers b = SampleBuffers::fresh(n, storage_);
+    jets_ = std::move(b.jets);
+    positions_ = std::move(b.positions);
+    geometry_ = std::move(b.geometry);
+  }
+  evaluate_all();
+  return sample_count();
+}
+
 std::size_t PatchEvaluator::move_control_point(std::size_t k, const Vec3& p) {
   assert(k < patch_->size());
+  if (domain_follows_points_) {
+    const PointMove move{k, p};
+    return reevaluate_moved(std::span(&move, 1));
+  }
   if (storage_ == SampleStorage::Compact) {
     patch_->set_control_point(k, p);
     evaluate_all();
@@ -260,6 +284,7 @@ std::size_t PatchEvaluator::max_columns() const {
 std::size_t PatchEvaluator::move_control_points(std::span<const PointMove> moves) {
   if (moves.size() == 1) return move_control_point(moves[0].k, moves[0].p);
   if (moves.empty()) return 0;
+  if (domain_follows_points_) return reevaluate_moved(moves);
   if (storage_ == SampleStorage::Compact) {  // one evaluation for all of them
     for (const PointMove& m : moves) patch_->set_control_point(m.k, m.p);
     evaluate_all();

@@ -9,6 +9,7 @@
 #include <memory>
 #include <new>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "core/domain/tessellation.hpp"
@@ -127,6 +128,11 @@ class PatchEvaluator {
   // Keeps a dropped column's storage for the next build if it has one entry per sample: a fresh
   // million-sample column took 40 ms instead of 25, mostly page faults. Held until that build.
   void keep_storage(Column& c);
+  // A patch whose domain follows its points (a side-based ribbons patch with its default
+  // domain, built from its curves) is not linear in them: after its points moved it gets the
+  // tessellation of its domain now (the same density) and is evaluated afresh. Returns the
+  // samples updated.
+  std::size_t reevaluate_moved(std::span<const PointMove> moves);
   // Geometry of samples first..first+count-1, or of index[first..first+count) if index is given.
   void update_geometry(std::span<const uint32_t> index, std::size_t first, std::size_t count);
   // Compact storage: samples first..first+count-1 from their jets, which are not kept.
@@ -136,6 +142,8 @@ class PatchEvaluator {
   SurfaceGeometry singular_limit(std::size_t i) const;
 
   std::shared_ptr<Patch> patch_;
+  bool domain_follows_points_ = false;
+  std::string domain_key_;  // of the domain tessellated, when it follows the points
   std::shared_ptr<const Tessellation> tessellation_;
   SampleStorage storage_;
   std::shared_ptr<SampleBufferPool> pool_;  // where the arrays below go back to, or null

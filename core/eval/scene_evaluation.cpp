@@ -82,7 +82,7 @@ SyncStats SceneEvaluation::sync(const Scene& scene, const InteriorEdit* known) {
   if (known && scene.network && faces_in_place(known->faces))
     if (const auto up = filling_.update_interior(*scene.network, known->faces)) {
       SyncStats stats;
-      sync_interior(*up, stats);
+      sync_interior(*up, *scene.network, stats);
       return stats;
     }
   // The only step that can refuse the scene comes first: nothing has changed if it throws.
@@ -165,10 +165,18 @@ bool SceneEvaluation::follow_offsets(SceneSurface& s, int f, SyncStats& stats) {
   return s.evaluator->revision() != before;
 }
 
-void SceneEvaluation::sync_interior(const FillingUpdate& up, SyncStats& stats) {
+void SceneEvaluation::sync_interior(const FillingUpdate& up, const Network& network,
+                                    SyncStats& stats) {
   std::vector<SceneSurface>& surfaces = surfaces_.surfaces;
-  for (int f : up.interior_edited)
-    if (follow_offsets(surfaces[std::size_t(f)], f, stats)) stats.changed_surfaces.push_back(f);
+  for (int f : up.interior_edited) {
+    std::vector<InteriorOffset> old = filling_.exchange_offsets(f, network.faces[f].offsets);
+    try {
+      if (follow_offsets(surfaces[std::size_t(f)], f, stats)) stats.changed_surfaces.push_back(f);
+    } catch (...) {
+      filling_.exchange_offsets(f, std::move(old));
+      throw;
+    }
+  }
   stats.previous_surface.resize(surfaces.size());
   std::iota(stats.previous_surface.begin(), stats.previous_surface.end(), 0);
 }

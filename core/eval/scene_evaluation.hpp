@@ -98,8 +98,10 @@ class SceneEvaluation {
   bool faces_in_place(std::span<const int> faces) const;
   // Moves face f's free points to its offsets now (an interior edit); whether its samples changed.
   bool follow_offsets(SceneSurface& s, int f, SyncStats& stats);
-  // The interior edits of update_interior(), in place.
-  void sync_interior(const FillingUpdate& up, SyncStats& stats);
+  // The interior edits of update_interior(), in place: each face takes its offsets from
+  // `network` as it is followed (a face that fails to follow gets its old offsets back, so the
+  // next sync tries it again).
+  void sync_interior(const FillingUpdate& up, const Network& network, SyncStats& stats);
   void sync_patches(const Scene& scene, std::vector<SceneSurface>& out, SyncStats& stats);
 
   TessellationCache cache_;

@@ -108,7 +108,7 @@ FillingUpdate IncrementalFilling::update(const Network& network) {
 }
 
 std::optional<FillingUpdate> IncrementalFilling::update_interior(const Network& n,
-                                                                 std::span<const int> faces) {
+                                                                 std::span<const int> faces) const {
   const Network& o = network_;
   if (n.vertices.size() != o.vertices.size() || n.edges.size() != o.edges.size() ||
       n.faces.size() != o.faces.size() || n.normals.size() != o.normals.size() ||
@@ -127,8 +127,12 @@ std::optional<FillingUpdate> IncrementalFilling::update_interior(const Network& 
       return std::nullopt;
     up.interior_edited.push_back(f);
   }
-  for (int f : up.interior_edited) network_.faces[f].offsets = n.faces[f].offsets;
   return up;
+}
+
+std::vector<InteriorOffset> IncrementalFilling::exchange_offsets(
+    int face, std::vector<InteriorOffset> offsets) {
+  return std::exchange(network_.faces.at(std::size_t(face)).offsets, std::move(offsets));
 }
 
 bool IncrementalFilling::same_structure(const Network& n) const {

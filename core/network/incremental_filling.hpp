@@ -73,11 +73,16 @@ class IncrementalFilling {
 
   // The same when the caller knows that `network` differs from the filled copy at most in the
   // interior offsets of `faces` (a free-point drag step): a cost that follows those faces alone,
-  // no scan of the network. The result lists them in interior_edited and leaves previous_face
-  // empty (every face keeps its patch). None, with nothing changed, when the network does not
-  // bear the promise out (counts, or a listed face changed in more than its offsets or in a way an
-  // interior edit cannot follow): then call update().
-  std::optional<FillingUpdate> update_interior(const Network& network, std::span<const int> faces);
+  // no scan of the network. The result lists the faces whose offsets differ in interior_edited
+  // and leaves previous_face empty (every face keeps its patch); nothing is taken over yet: the
+  // caller takes each listed face's offsets (exchange_offsets) as it follows that face. None when
+  // the network does not bear the promise out (counts, or a listed face changed in more than its
+  // offsets or in a way an interior edit cannot follow): then call update().
+  std::optional<FillingUpdate> update_interior(const Network& network,
+                                               std::span<const int> faces) const;
+  // Gives face f these offsets, returning those it had (an interior edit taken over, or put back
+  // when following it failed).
+  std::vector<InteriorOffset> exchange_offsets(int face, std::vector<InteriorOffset> offsets);
 
   const Network& network() const { return network_; }
   const NetworkTopology& topology() const { return topology_; }

@@ -4,6 +4,7 @@
 // surface; and it follows the curves when a curve point moves.
 #include <gtest/gtest.h>
 
+#include "core/eval/patch_evaluator.hpp"
 #include "core/patch/transfinite/angular_domain.hpp"
 #include "ribbon_test_util.hpp"
 
@@ -80,6 +81,29 @@ TEST(RibbonSideBasedDomain, FollowsAMovedCurvePointAndOnlyThen) {
   // The other schemes keep the regular n-gon whatever the curves.
   const RibbonPatch cb(RibbonScheme::CornerBased, moved, unchecked);
   EXPECT_EQ(cb.domain().key(), ConvexPolygonDomain::regular(5).key());
+}
+
+TEST(RibbonSideBasedDomain, AnEvaluatorMovingACurvePointFollowsTheNewDomain) {
+  // The surface is not linear in a curve point when the domain follows the curves: an evaluator
+  // asked to move one evaluates afresh on the new domain's tessellation (both storages), and
+  // equals a fresh evaluator of the moved patch.
+  for (SampleStorage storage : {SampleStorage::Jets, SampleStorage::Compact}) {
+    auto patch = std::make_shared<RibbonPatch>(RibbonScheme::SideBased, test::reference_face(5));
+    const Domain& d0 = patch->domain();
+    PatchEvaluator ev(patch, std::make_shared<const Tessellation>(d0.tessellate(12)), storage);
+    std::size_t k = 0;
+    while (patch->kind(k) != ControlPointKind::Boundary || k == 0) ++k;  // an inner curve point
+    const Vec3 to = patch->control_point(k) + Vec3(1.2, -0.6, 0.5);
+    ev.move_control_point(k, to);
+    auto moved = std::shared_ptr<RibbonPatch>(static_cast<RibbonPatch*>(patch->clone().release()));
+    const PatchEvaluator fresh(
+        moved, std::make_shared<const Tessellation>(moved->domain().tessellate(12)), storage);
+    ASSERT_EQ(ev.sample_count(), fresh.sample_count());
+    for (std::size_t i = 0; i < ev.sample_count(); ++i) {
+      EXPECT_EQ(ev.tessellation().points[i], fresh.tessellation().points[i]);
+      EXPECT_LT(glm::length(ev.position(i) - fresh.position(i)), 1e-12);
+    }
+  }
 }
 
 }  // namespace

@@ -268,7 +268,7 @@ void RibbonPatch::set_control_point(std::size_t k, const Vec3& p) {
     if (slot % 2 == 0) {
       side.curve.points[j] = p;
       unit.curve.spline().points[j] = p;
-      if (curve_domain(scheme_, options_)) set_domain(choose_domain(scheme_, sides_, options_));
+      if (domain_follows_curves()) set_domain(choose_domain(scheme_, sides_, options_));
     } else {
       side.cross.points[j] = p;
       unit.cross.spline().points[j] = p;

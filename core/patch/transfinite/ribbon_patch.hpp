@@ -83,6 +83,11 @@ class RibbonPatch : public PatchType<RibbonPatch> {
   // the side-based scheme the polygon built from the curves (transfinite/angular_domain.hpp),
   // rebuilt whenever a curve point moves.
   bool default_domain() const { return !options_.domain.has_value(); }
+  // Whether the domain is built from the curves and so moves with a curve point (the side-based
+  // scheme's default): the surface is then not linear in the curves' points.
+  bool domain_follows_curves() const {
+    return scheme_ == transfinite::RibbonScheme::SideBased && !options_.domain;
+  }
 
   const Domain& domain() const override { return domain_; }
   const ConvexPolygonDomain& polygon() const { return domain_; }
