@@ -1,14 +1,18 @@
 // GB figures: full evaluation of cagd86 (5 sides, degree 5) with second
-// derivatives, normals and curvatures; the drag update at ~1e5 samples with its influence column
-// prepared; the one-off column build at ~1e6 samples. The evaluation and the drag are measured
-// with one core held busy by another process too (*_busy, and their ratios to the quiet figures).
+// derivatives, normals and curvatures, and of a network GB face of 5 sides and degree 5; the drag
+// update at ~1e5 samples with its influence column prepared; the one-off column build at ~1e6
+// samples. The evaluation and the drag are measured with one core held busy by another process too
+// (*_busy, and their ratios to the quiet figures).
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 
 #include "bench_common.hpp"
 #include "bench_patches.hpp"
 #include "core/base/parallel_for.hpp"
+#include "core/domain/tessellation_cache.hpp"
 #include "core/eval/patch_evaluator.hpp"
+#include "core/eval/scene_surfaces.hpp"
 #include "core/io/gbp_io.hpp"
 
 namespace pl::bench {
@@ -53,6 +57,39 @@ void bench_gb(const Options& o) {
     figure("gb_full_eval_scalar_msamples_per_s", ev.sample_count() / (scalar_ms * 1e3),
            "Msamples/s");
     figure("gb_full_eval_speedup_over_scalar", scalar_ms / ms, "x");
+    // A network GB face of the same side count and degree (one pentagon on a wavy circle,
+    // degree 5 with its centre raised: a gb-ribbons patch with interior control) over the same
+    // pentagon at the same density, in the same run: one face on its own, its basis not shared.
+    {
+      Scene scene;
+      scene.network.emplace();
+      Network& net = *scene.network;
+      NetworkFace face;
+      for (int i = 0; i < 5; ++i) {
+        const double a = 2 * M_PI * i / 5;
+        net.vertices.push_back({std::cos(a), std::sin(a), 0.1 * std::sin(3 * a)});
+        face.loop.push_back(i);
+      }
+      for (int i = 0; i < 5; ++i) {
+        const Vec3 p = net.vertices[i], q = net.vertices[(i + 1) % 5], lift(0, 0, 0.05);
+        NetworkEdge e;
+        e.v = {i, (i + 1) % 5};
+        e.handles = {p + (q - p) / 3.0 + lift, p + 2.0 * (q - p) / 3.0 + lift};
+        net.edges.push_back(e);
+      }
+      face.scheme = FaceScheme::GB;
+      face.degree = 5;
+      face.offsets.push_back({.centre = true, .by = Vec3(0, 0, 0.05)});
+      net.faces.push_back(face);
+      TessellationCache cache;
+      const SceneSurfaces s = evaluate_scene(scene, 2, std::nullopt, cache, "bench");
+      PatchEvaluator face_ev(std::shared_ptr<Patch>(s.surfaces.at(0).evaluator->patch().clone()),
+                             pentagon(o.quick ? 60 : 632));
+      const double face_ms = median_ms(o.quick ? 2 : 5, [&] { face_ev.evaluate_all(); });
+      const double face_rate = face_ev.sample_count() / (face_ms * 1e3);
+      figure("gb_network_face_msamples_per_s", face_rate, "Msamples/s");
+      figure("gb_network_face_over_gb_full_eval", face_rate / (samples / (t.quiet * 1e3)), "x");
+    }
     if (cpu_has_wide_lanes()) {  // what a CPU with AVX2 but without AVX-512 runs
       narrow_lanes_only = true;
       const double narrow_ms = median_ms(o.quick ? 2 : 5, [&] { ev.evaluate_all(); });
