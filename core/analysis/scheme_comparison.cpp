@@ -12,6 +12,7 @@
 #include "core/analysis/surface_energy.hpp"
 #include "core/base/data_error.hpp"
 #include "core/eval/scene_evaluation.hpp"
+#include "core/patch/gb/shared_basis.hpp"
 #include "core/scene/network_edit.hpp"
 
 namespace pl {
@@ -57,6 +58,7 @@ double throughput_msamples_per_s(const PatchEvaluator& ev, double timing_ms) {
   std::vector<SurfaceJet> jets(xs.size());
   std::vector<SurfaceGeometry> geometry(xs.size());
   using clock = std::chrono::steady_clock;
+  const SharedBasisBypass alone;  // the face on its own, not a basis kept from its last round
   const auto t0 = clock::now();
   std::size_t samples = 0;
   double ms = 0;

@@ -9,6 +9,7 @@
 
 #include "bench_common.hpp"
 #include "core/network/network_filling.hpp"
+#include "core/patch/gb/shared_basis.hpp"
 #include "core/scene/network_edit.hpp"
 
 namespace pl::bench {
@@ -46,6 +47,7 @@ void bench_schemes(const Options& o) {
       const Patch& patch = *filling.faces.at(0).patch;
       const std::vector<Vec2> xs = patch.domain().tessellate(o.quick ? 4 : kDensity).points;
       std::vector<SurfaceJet> out(xs.size());
+      const SharedBasisBypass alone;  // each scheme's own evaluation, no kept GB basis
       const double ms = median_ms(o.quick ? 1 : 7, [&] { patch.evaluate_many(xs, out); });
       const std::string name = "scheme_full_eval_msamples_per_s_" + scheme_keyword(scheme) +
                                (n == 4 ? "" : "_n" + std::to_string(n));

@@ -44,5 +44,27 @@ TEST(GBSharedBasis, FacesThroughTheSharedBasisEqualTheirOwnEvaluation) {
   EXPECT_LT(worst_d2, 1e-10);
 }
 
+TEST(GBSharedBasis, ABypassEvaluatesFacesOnTheirOwn) {
+  // Throughput figures compare a face evaluated on its own: under a bypass no block is kept or
+  // used, and the samples are the same numbers.
+  Scene scene;
+  scene.network = cube_sphere_network(2, FaceScheme::GB);
+  TessellationCache cache;
+  const SceneSurfaces shared = evaluate_scene(scene, 19, std::nullopt, cache, "s");
+  const SharedBasisUse before = shared_basis_use();
+  SharedBasisUse after;
+  {
+    const SharedBasisBypass alone;
+    TessellationCache other;
+    const SceneSurfaces own = evaluate_scene(scene, 19, std::nullopt, other, "s");
+    after = shared_basis_use();
+    for (std::size_t s = 0; s < own.surfaces.size(); ++s)
+      for (std::size_t i = 0; i < own.surfaces[s].evaluator->sample_count(); ++i)
+        EXPECT_EQ(own.surfaces[s].evaluator->jets()[i].p,
+                  shared.surfaces[s].evaluator->jets()[i].p);
+  }
+  EXPECT_EQ(after.blocks, before.blocks);
+}
+
 }  // namespace
 }  // namespace pl

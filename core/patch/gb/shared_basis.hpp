@@ -32,6 +32,20 @@ std::shared_ptr<const std::vector<Jet>> shared_basis_block(
     const std::string& layout, std::span<const Vec2> xs, std::size_t width,
     const std::function<void(Vec2, std::span<Jet>)>& build);
 
+// While one lives, this thread neither finds nor keeps blocks: its evaluations are those of a patch
+// on its own. Throughput figures use it, so that they compare schemes, not a cache that only some
+// of them have (evaluating the same face again would otherwise time the kept basis).
+class SharedBasisBypass {
+ public:
+  SharedBasisBypass();
+  ~SharedBasisBypass();
+  SharedBasisBypass(const SharedBasisBypass&) = delete;
+  SharedBasisBypass& operator=(const SharedBasisBypass&) = delete;
+
+ private:
+  bool was_;
+};
+
 // How many blocks are kept now, and their bytes (tests, benchmarks).
 struct SharedBasisUse {
   std::size_t blocks = 0, bytes = 0;
