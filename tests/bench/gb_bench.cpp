@@ -9,6 +9,7 @@
 
 #include "bench_common.hpp"
 #include "bench_patches.hpp"
+#include "bench_scenes.hpp"
 #include "core/base/parallel_for.hpp"
 #include "core/domain/tessellation_cache.hpp"
 #include "core/eval/patch_evaluator.hpp"
@@ -61,26 +62,11 @@ void bench_gb(const Options& o) {
     // degree 5 with its centre raised: a gb-ribbons patch with interior control) over the same
     // pentagon at the same density, in the same run: one face on its own, its basis not shared.
     {
-      Scene scene;
-      scene.network.emplace();
-      Network& net = *scene.network;
-      NetworkFace face;
-      for (int i = 0; i < 5; ++i) {
-        const double a = 2 * M_PI * i / 5;
-        net.vertices.push_back({std::cos(a), std::sin(a), 0.1 * std::sin(3 * a)});
-        face.loop.push_back(i);
-      }
-      for (int i = 0; i < 5; ++i) {
-        const Vec3 p = net.vertices[i], q = net.vertices[(i + 1) % 5], lift(0, 0, 0.05);
-        NetworkEdge e;
-        e.v = {i, (i + 1) % 5};
-        e.handles = {p + (q - p) / 3.0 + lift, p + 2.0 * (q - p) / 3.0 + lift};
-        net.edges.push_back(e);
-      }
+      Scene scene = wavy_ring_face(5, 0.1, 3, 0.05);
+      NetworkFace& face = scene.network->faces[0];
       face.scheme = FaceScheme::GB;
       face.degree = 5;
       face.offsets.push_back({.centre = true, .by = Vec3(0, 0, 0.05)});
-      net.faces.push_back(face);
       TessellationCache cache;
       const SceneSurfaces s = evaluate_scene(scene, 2, std::nullopt, cache, "bench");
       PatchEvaluator face_ev(std::shared_ptr<Patch>(s.surfaces.at(0).evaluator->patch().clone()),

@@ -7,41 +7,16 @@
 #include <cmath>
 
 #include "bench_common.hpp"
+#include "bench_scenes.hpp"
 #include "core/eval/scene_surfaces.hpp"
 
 namespace pl::bench {
 
-namespace {
-
-// One face: the loop of n vertices on a wavy circle, straight-ish cubic edges lifted a little.
-Scene ngon_scene(int n) {
-  Network net;
-  for (int i = 0; i < n; ++i) {
-    const double a = 2 * M_PI * i / n;
-    net.vertices.push_back({std::cos(a), std::sin(a), 0.1 * std::sin(3 * a)});
-  }
-  NetworkFace face;
-  for (int i = 0; i < n; ++i) {
-    const Vec3 p = net.vertices[i], q = net.vertices[(i + 1) % n], lift(0, 0, 0.05);
-    NetworkEdge e;
-    e.v = {i, (i + 1) % n};
-    e.handles = {p + (q - p) / 3.0 + lift, p + 2.0 * (q - p) / 3.0 + lift};
-    net.edges.push_back(e);
-    face.loop.push_back(i);
-  }
-  face.scheme = FaceScheme::GB;
-  net.faces.push_back(face);
-  Scene scene;
-  scene.network = net;
-  return scene;
-}
-
-}  // namespace
-
 void bench_gb_face(const Options& o) {
   constexpr int kDensity = 32;  // patchlab's default --density
   for (int n : {8, 16, 32, 64}) {
-    const Scene scene = ngon_scene(n);
+    Scene scene = wavy_ring_face(n, 0.1, 3, 0.05);
+    scene.network->faces[0].scheme = FaceScheme::GB;
     std::size_t samples = 0;
     const double ms = median_ms(o.quick ? 1 : 5, [&] {
       TessellationCache cache;  // a fresh one: the tessellation is part of the cost

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bench_common.hpp"
+#include "bench_scenes.hpp"
 #include "core/eval/scene_evaluation.hpp"
 #include "core/network/gb_face.hpp"
 #include "core/network/gb_face_interior.hpp"
@@ -21,26 +22,11 @@ namespace {
 
 // A pentagon face on a gently curved loop, degree 6, its centre and one inner-row point moved.
 Scene pentagon_scene() {
-  Network net;
-  for (int i = 0; i < 5; ++i) {
-    const double a = 2 * M_PI * i / 5;
-    net.vertices.push_back({std::cos(a), std::sin(a), 0.15 * std::sin(2 * a)});
-  }
-  NetworkFace face;
-  for (int i = 0; i < 5; ++i) {
-    const Vec3 p = net.vertices[i], q = net.vertices[(i + 1) % 5], lift(0, 0, 0.08);
-    NetworkEdge e;
-    e.v = {i, (i + 1) % 5};
-    e.handles = {p + (q - p) / 3.0 + lift, p + 2.0 * (q - p) / 3.0 + lift};
-    net.edges.push_back(e);
-    face.loop.push_back(i);
-  }
+  Scene scene = wavy_ring_face(5, 0.15, 2, 0.08);
+  NetworkFace& face = scene.network->faces[0];
   face.degree = 6;
   face.offsets = {{.centre = true, .by = {0, 0, 0.2}},
                   {.side = 2, .j = 2, .layer = 2, .by = {0, 0, 0.1}}};
-  net.faces.push_back(face);
-  Scene scene;
-  scene.network = net;
   return scene;
 }
 
