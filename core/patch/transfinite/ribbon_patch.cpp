@@ -109,15 +109,6 @@ int ribbon_reflex_corner(const std::vector<RibbonSide>& sides) {
   return -1;
 }
 
-namespace {
-
-// Whether the scheme's default domain is built from the curves (the side-based scheme's).
-bool curve_domain(RibbonScheme scheme, const RibbonPatchOptions& o) {
-  return scheme == RibbonScheme::SideBased && !o.domain;
-}
-
-}  // namespace
-
 RibbonPatch::DomainChoice RibbonPatch::choose_domain(RibbonScheme scheme,
                                                      const std::vector<RibbonSide>& sides,
                                                      const RibbonPatchOptions& o) {
@@ -125,7 +116,7 @@ RibbonPatch::DomainChoice RibbonPatch::choose_domain(RibbonScheme scheme,
   if (n < 3 || n > std::size_t(RibbonPatch::kMaxSides))
     throw std::invalid_argument("a ribbons patch has 3 to " + str(RibbonPatch::kMaxSides) +
                                 " sides, this one has " + std::to_string(n));
-  if (curve_domain(scheme, o))
+  if (domain_follows_curves(scheme, o))
     if (const auto v = transfinite::angular_domain(unit_sides(sides)))
       return {ConvexPolygonDomain(*v), transfinite::angular_domain_centre(*v)};
   if (!o.domain)  // the regular n-gon, centred at (0, 0) exactly

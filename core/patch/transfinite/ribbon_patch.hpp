@@ -85,8 +85,10 @@ class RibbonPatch : public PatchType<RibbonPatch> {
   bool default_domain() const { return !options_.domain.has_value(); }
   // Whether the domain is built from the curves and so moves with a curve point (the side-based
   // scheme's default): the surface is then not linear in the curves' points.
-  bool domain_follows_curves() const {
-    return scheme_ == transfinite::RibbonScheme::SideBased && !options_.domain;
+  bool domain_follows_curves() const { return domain_follows_curves(scheme_, options_); }
+  static bool domain_follows_curves(transfinite::RibbonScheme scheme,
+                                    const RibbonPatchOptions& options) {
+    return scheme == transfinite::RibbonScheme::SideBased && !options.domain;
   }
 
   const Domain& domain() const override { return domain_; }
