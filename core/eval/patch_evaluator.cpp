@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "core/base/parallel_for.hpp"
+#include "core/patch/gb/shared_basis.hpp"
 #include "core/patch/transfinite/ribbon_patch.hpp"
 
 namespace pl {
@@ -144,8 +145,12 @@ SurfaceGeometry PatchEvaluator::singular_limit(std::size_t i) const {
 void PatchEvaluator::evaluate_all() {
   const auto& xs = tessellation_->points;
   nonfinite_.clear();
-  // Chunks through evaluate_many, so patch types with a batched (SIMD) form use it.
+  // Chunks through evaluate_many, so patch types with a batched (SIMD) form use it. A caller that
+  // evaluates a patch on its own (SharedBasisBypass) means it for every chunk, on any thread.
+  const bool alone = shared_basis_bypassed();
   parallel_chunks(xs.size(), grains_.evaluate, [&](std::size_t first, std::size_t last) {
+    std::optional<SharedBasisBypass> own;
+    if (alone) own.emplace();
     for (std::size_t b = first; b < last; b += kChunk) {
       const std::size_t e = std::min(last, b + kChunk);
       if (storage_ == SampleStorage::Jets) {

@@ -1,6 +1,9 @@
 #include "core/eval/scene_surfaces.hpp"
 
+#include <optional>
+
 #include "core/base/parallel_for.hpp"
+#include "core/patch/gb/shared_basis.hpp"
 
 namespace pl {
 
@@ -15,7 +18,10 @@ SceneSurfaces evaluate_scene(const Scene& scene, int density, std::optional<Face
     // Faces evaluated side by side over the cores (each evaluation also splits its samples): a
     // network of many small faces is not a queue of small parallel loops.
     out.surfaces.resize(filling.faces.size());
+    const bool alone = shared_basis_bypassed();  // the caller's, for every face's thread
     parallel_each(filling.faces.size(), 1, [&](std::size_t i) {
+      std::optional<SharedBasisBypass> own;
+      if (alone) own.emplace();
       FacePatch& fp = filling.faces[i];
       SceneSurface& s = out.surfaces[i];
       const auto& face = scene.network->faces[fp.face];

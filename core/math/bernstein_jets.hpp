@@ -19,9 +19,12 @@ template <class T>
 struct BernsteinTableOf {
   static constexpr int kMax = 32;
   T d0[kMax + 1], d1[kMax + 1], d2[kMax + 1];
-  [[gnu::always_inline]] BernsteinTableOf(int degree, const T& t) {
+  [[gnu::always_inline]] BernsteinTableOf(int degree, const T& t)
+      : BernsteinTableOf(degree, t, 1.0 - t) {}
+  // With 1 - t given: where t is near 1 and 1 - t is known to more digits than t's own rounding
+  // leaves it (a small quantity the caller has directly), the powers of 1 - t keep them.
+  [[gnu::always_inline]] BernsteinTableOf(int degree, const T& t, const T& s) {
     const T zero{};
-    const T s = 1.0 - t;
     const int d = degree;
     T r1[kMax + 1], r2[kMax + 1];  // degree d-1 and d-2
     if (d == 0) {

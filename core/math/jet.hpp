@@ -94,6 +94,9 @@ constexpr Jet product(const Jet& a, const Jet& b) {
 constexpr Jet sum(const Jet& a, const Jet& b) {
   return a + b;
 }
+constexpr Jet difference(const Jet& a, const Jet& b) {
+  return a - b;
+}
 constexpr Jet scaled(const Jet& a, double s) {
   return a * s;
 }

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <atomic>
+#include <cmath>
 #include <type_traits>
 
 #include "core/math/jet.hpp"
@@ -82,6 +83,18 @@ PATCHLAB_LANES_INLINE JetLanesOf<V> sum(const JetLanesOf<V>& a, const JetLanesOf
 
 template <class V>
 PATCHLAB_LANES_INLINE JetLanesOf<V> scaled(const JetLanesOf<V>& a, double s) {
+  return {a.f * s, a.fu * s, a.fv * s, a.fuu * s, a.fuv * s, a.fvv * s};
+}
+
+// a - b as a + (-b): the same number as Jet's a - b, component by component.
+template <class V>
+PATCHLAB_LANES_INLINE JetLanesOf<V> difference(const JetLanesOf<V>& a, const JetLanesOf<V>& b) {
+  return {a.f - b.f, a.fu - b.fu, a.fv - b.fv, a.fuu - b.fuu, a.fuv - b.fuv, a.fvv - b.fvv};
+}
+
+// a times a different factor in each lane.
+template <class V>
+PATCHLAB_LANES_INLINE JetLanesOf<V> scaled(const JetLanesOf<V>& a, const V& s) {
   return {a.f * s, a.fu * s, a.fv * s, a.fuu * s, a.fuv * s, a.fvv * s};
 }
 
@@ -154,11 +167,55 @@ PATCHLAB_LANES_INLINE Jet lane(const Jet& a, int) {
   return a;
 }
 
+// The samples a number type carries: 1 for double, one per lane for a lane type.
+template <class T>
+inline constexpr int lane_count = sizeof(T) / sizeof(double);
+
+// Value b of a lane type, or the double itself; and its setter.
+template <class T>
+PATCHLAB_LANES_INLINE double lane_value(const T& x, int b) {
+  if constexpr (std::is_same_v<T, double>)
+    return x;
+  else
+    return x[b];
+}
+template <class T>
+PATCHLAB_LANES_INLINE void set_lane_value(T& x, int b, double value) {
+  if constexpr (std::is_same_v<T, double>)
+    x = value;
+  else
+    x[b] = value;
+}
+
+// Sets the jet of sample b (for Jet, the jet itself).
+template <class J>
+PATCHLAB_LANES_INLINE void set_lane(J& a, int b, const Jet& value) {
+  set_lane_value(a.f, b, value.f), set_lane_value(a.fu, b, value.fu);
+  set_lane_value(a.fv, b, value.fv), set_lane_value(a.fuu, b, value.fuu);
+  set_lane_value(a.fuv, b, value.fuv), set_lane_value(a.fvv, b, value.fvv);
+}
+
 // A function linear in (u, v) as the jet of one sample (LinearLanesOf<double> is its scalar form).
 template <class T>
 PATCHLAB_LANES_INLINE JetOf<T> linear_jet(const LinearLanesOf<T>& l) {
   const T z{};
   return {l.f, z + l.fu, z + l.fv, z, z, z};
+}
+
+// sqrt(a) with the derivatives Jet's sqrt() gives, for a Jet or a JetLanesOf.
+template <class J>
+PATCHLAB_LANES_INLINE J jet_sqrt(const J& a) {
+  auto r = a.f;
+  for (int b = 0; b < lane_count<decltype(r)>; ++b)
+    set_lane_value(r, b, std::sqrt(lane_value(r, b)));
+  return chain(a, r, 0.5 / r, -0.25 / (r * a.f));
+}
+
+// a where m holds, else b, sample by sample (m: a bool for one sample, a lane comparison's mask).
+template <class M, class J>
+PATCHLAB_LANES_INLINE J select_jet(const M& m, const J& a, const J& b) {
+  return {m ? a.f : b.f,     m ? a.fu : b.fu,   m ? a.fv : b.fv,
+          m ? a.fuu : b.fuu, m ? a.fuv : b.fuv, m ? a.fvv : b.fvv};
 }
 
 }  // namespace pl

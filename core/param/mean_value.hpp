@@ -10,6 +10,7 @@
 // patch checks for (see gb_ribbon_patch.hpp).
 #pragma once
 
+#include "core/math/lanes.hpp"
 #include "core/param/parameterization.hpp"
 
 namespace pl {
@@ -31,6 +32,16 @@ class MeanValueParameters final : public Parameterization {
   // sides away from side i: patches that need it there take lambda instead.
   void evaluate(Vec2 x, std::span<Jet> lambda, std::span<Jet> s, std::span<Jet> h,
                 SideMask sides = kAllSides) const override;
+  // lambda and h (arrays of sides() entries, h of every side) for kLanes (or kWideLanes) points
+  // (u[b], v[b]) at once, none of them a vertex, each lane bit for bit what evaluate() gives;
+  // the WideLane form only where wide_lanes() holds.
+  void evaluate_lanes(const Lane& u, const Lane& v, JetLanes* lambda, JetLanes* h) const;
+  void evaluate_lanes(const WideLane& u, const WideLane& v, WideJetLanes* lambda,
+                      WideJetLanes* h) const;
+
+ private:
+  template <class T>
+  void sample_lanes(const T& u, const T& v, JetOf<T>* lambda, JetOf<T>* h) const;
 };
 
 }  // namespace pl

@@ -15,6 +15,7 @@
 #include "core/eval/patch_evaluator.hpp"
 #include "core/eval/scene_surfaces.hpp"
 #include "core/io/gbp_io.hpp"
+#include "core/patch/gb/shared_basis.hpp"
 
 namespace pl::bench {
 
@@ -71,6 +72,7 @@ void bench_gb(const Options& o) {
       const SceneSurfaces s = evaluate_scene(scene, 2, std::nullopt, cache, "bench");
       PatchEvaluator face_ev(std::shared_ptr<Patch>(s.surfaces.at(0).evaluator->patch().clone()),
                              pentagon(o.quick ? 60 : 632));
+      const SharedBasisBypass alone;  // no basis kept from another face: this face's own work
       const double face_ms = median_ms(o.quick ? 2 : 5, [&] { face_ev.evaluate_all(); });
       const double face_rate = face_ev.sample_count() / (face_ms * 1e3);
       figure("gb_network_face_msamples_per_s", face_rate, "Msamples/s");

@@ -16,7 +16,9 @@
 #include "core/math/bernstein.hpp"
 #include "core/math/jet.hpp"
 #include "core/param/mean_value.hpp"
+#include "core/patch/gb/central_weight.hpp"
 #include "core/patch/gb/gb_ribbon_patch.hpp"
+#include "core/patch/gb/shared_basis.hpp"
 
 namespace pl {
 namespace {
@@ -318,6 +320,48 @@ TEST(GBRibbonEvaluate, NearCornersCloserToExactSumThanBasisSum) {
     EXPECT_EQ(evaluate_error[e].reference_not_finite, 0);
   }
   std::printf("%d samples overflowed in both double sums\n", both_overflow);
+}
+
+}  // namespace
+}  // namespace pl
+
+namespace pl {
+namespace {
+
+// evaluate_many() on its own (the SIMD path: quotient form over convex domains, the homogeneous
+// sums over concave ones, the scalar path on the sides and at the corners) gives evaluate()'s
+// numbers bit for bit, in the wide and the narrow lanes; so does the interior-control variant's
+// central weight.
+TEST(GBRibbonEvaluate, BatchedEqualsScalarBitForBit) {
+  const SharedBasisBypass alone;
+  std::size_t samples = 0, differing = 0;
+  for (const Case& c : cases())
+    for (const auto& variant : kVariants) {
+      SCOPED_TRACE(label(c, variant));
+      const GBRibbonPatch g = make_patch(c.poly, variant[0], variant[1]);
+      const Tessellation t = g.polygon().tessellate(9);  // vertices, sides and inside
+      const CentralWeight centre(g.polygon());
+      for (bool narrow : {false, true}) {
+        narrow_lanes_only = narrow;
+        std::vector<SurfaceJet> many(t.points.size());
+        g.evaluate_many(t.points, many);
+        std::vector<Jet> weights(t.points.size());
+        centre.evaluate_many(t.points, weights);
+        for (std::size_t i = 0; i < t.points.size(); ++i) {
+          const SurfaceJet one = g.evaluate(t.points[i]);
+          const Jet w = centre(t.points[i]);
+          ++samples;
+          if (!(many[i].p == one.p && many[i].su == one.su && many[i].sv == one.sv &&
+                many[i].suu == one.suu && many[i].suv == one.suv && many[i].svv == one.svv &&
+                weights[i].f == w.f && weights[i].fuu == w.fuu && weights[i].fuv == w.fuv))
+            ++differing;
+        }
+      }
+      narrow_lanes_only = false;
+    }
+  std::printf("[ batch     ] %zu samples, %zu differ from the scalar path\n", samples, differing);
+  EXPECT_GT(samples, 1000u);
+  EXPECT_EQ(differing, 0u);
 }
 
 }  // namespace

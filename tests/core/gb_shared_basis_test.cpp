@@ -46,7 +46,7 @@ TEST(GBSharedBasis, FacesThroughTheSharedBasisEqualTheirOwnEvaluation) {
 
 TEST(GBSharedBasis, ABypassEvaluatesFacesOnTheirOwn) {
   // Throughput figures compare a face evaluated on its own: under a bypass no block is kept or
-  // used, and the samples are the same numbers.
+  // used.
   Scene scene;
   scene.network = cube_sphere_network(2, FaceScheme::GB);
   TessellationCache cache;
@@ -58,10 +58,15 @@ TEST(GBSharedBasis, ABypassEvaluatesFacesOnTheirOwn) {
     TessellationCache other;
     const SceneSurfaces own = evaluate_scene(scene, 19, std::nullopt, other, "s");
     after = shared_basis_use();
-    for (std::size_t s = 0; s < own.surfaces.size(); ++s)
-      for (std::size_t i = 0; i < own.surfaces[s].evaluator->sample_count(); ++i)
-        EXPECT_EQ(own.surfaces[s].evaluator->jets()[i].p,
-                  shared.surfaces[s].evaluator->jets()[i].p);
+    // On its own a face runs its SIMD path: the shared sums' numbers to rounding.
+    double worst = 0;
+    for (std::size_t s = 0; s < own.surfaces.size(); ++s) {
+      const PatchEvaluator& ev = *own.surfaces[s].evaluator;
+      for (std::size_t i = 0; i < ev.sample_count(); ++i)
+        worst = std::max(worst,
+                         glm::length(ev.jets()[i].p - shared.surfaces[s].evaluator->jets()[i].p));
+    }
+    EXPECT_LT(worst, 1e-14);  // the sphere has radius 1
   }
   EXPECT_EQ(after.blocks, before.blocks);
 }

@@ -1,6 +1,8 @@
 #include "core/patch/gb/central_weight.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace pl {
 
@@ -14,19 +16,6 @@ bool inside(const std::vector<Vec2>& poly, Vec2 x) {
     if ((a.y > x.y) != (b.y > x.y) && x.x < a.x + (x.y - a.y) / (b.y - a.y) * (b.x - a.x)) in = !in;
   }
   return in;
-}
-
-// A plane function linear in x, c + l.(x - x0) at x = x0: value c, gradient l.
-Jet linear(double c, Vec2 l) {
-  return {c, l.x, l.y, 0, 0, 0};
-}
-
-// (rho - s) / 2 for rho = |x - v| >= |s|, s a signed distance along the side, f the distance
-// across it (rho^2 = s^2 + f^2): zero over the side, where s > 0 and it equals f^2 / (2 (rho +
-// s)) (written so, without the cancellation), and about |s| past the side's end.
-Jet past_end(const Jet& rho, const Jet& s, const Jet& f2) {
-  if (s.f > 0) return f2 / ((rho + s) * 2.0);
-  return (rho - s) * 0.5;
 }
 
 }  // namespace
@@ -74,30 +63,86 @@ CentralWeight::CentralWeight(const ConcavePolygonDomain& domain) : vertices_(dom
   scale_ = std::isfinite(best) && best > 1e-200 ? 1 / best : 0;
 }
 
-Jet CentralWeight::unnormalised(Vec2 x) const {
-  for (const Vec2& v : vertices_)
-    if (x == v) return Jet{};  // two factors vanish: w and its derivatives are 0
-  const auto distance_to = [&](Vec2 v) {
-    const Vec2 d = x - v;
-    return sqrt(Jet(glm::dot(d, d), 2 * d.x, 2 * d.y, 2, 0, 2));
+template <class T>
+PATCHLAB_LANES_INLINE JetOf<T> CentralWeight::weight_at(const T& u, const T& v) const {
+  using J = JetOf<T>;
+  const T z{};
+  const auto distance_to = [&](Vec2 p) {
+    const T dx = u - p.x, dy = v - p.y;
+    return jet_sqrt(J{dx * dx + dy * dy, 2 * dx, 2 * dy, z + 2, z, z + 2});
   };
-  Jet rho_a = distance_to(sides_.front().a);  // side 0 runs from the last vertex to vertex 0
-  Jet w(1.0);
+  // (rho - s) / 2 for rho = |x - v| >= |s|, s a signed distance along the side, f the distance
+  // across it (rho^2 = s^2 + f^2): zero over the side, where s > 0 and it equals
+  // f^2 / (2 (rho + s)) (written so, without the cancellation), and about |s| past the side's end.
+  const auto past_end = [](const J& rho, const J& s, const J& f2) {
+    return select_jet(s.f > 0, product(f2, reciprocal(scaled(sum(rho, s), 2.0))),
+                      scaled(difference(rho, s), 0.5));
+  };
+  J rho_a = distance_to(sides_.front().a);  // side 0 runs from the last vertex to vertex 0
+  J w = constant_jet<T>(1.0);
   for (std::size_t i = 0; i < sides_.size(); ++i) {
     const Side& side = sides_[i];
-    const Jet rho_b = distance_to(vertices_[i]);
-    const Vec2 d = x - side.a;
+    const J rho_b = distance_to(vertices_[i]);
+    const T dx = u - side.a.x, dy = v - side.a.y;
     const Vec2 across(-side.e.y, side.e.x);
-    const Jet f = linear(glm::dot(across, d), across);
-    const Jet s_a = linear(glm::dot(side.e, d), side.e);
-    const Jet s_b = linear(side.length - s_a.f, -side.e);
-    const Jet f2 = f * f;
-    const Jet r_a = past_end(rho_a, s_a, f2), r_b = past_end(rho_b, s_b, f2);
-    const Jet g = f2 + r_a * r_a + r_b * r_b;
-    w = w * (g / (g + reach_));
+    // Linear in x: the distances across the side and along it from each end.
+    const J f = {across.x * dx + across.y * dy, z + across.x, z + across.y, z, z, z};
+    const J s_a = {side.e.x * dx + side.e.y * dy, z + side.e.x, z + side.e.y, z, z, z};
+    const J s_b = {side.length - s_a.f, z - side.e.x, z - side.e.y, z, z, z};
+    const J f2 = product(f, f);
+    const J r_a = past_end(rho_a, s_a, f2), r_b = past_end(rho_b, s_b, f2);
+    const J g = sum(sum(f2, product(r_a, r_a)), product(r_b, r_b));
+    J g_reach = g;
+    g_reach.f += reach_;
+    w = product(w, product(g, reciprocal(g_reach)));
     rho_a = rho_b;
   }
   return w;
+}
+
+Jet CentralWeight::unnormalised(Vec2 x) const {
+  for (const Vec2& v : vertices_)
+    if (x == v) return Jet{};  // two factors vanish: w and its derivatives are 0
+  return weight_at(x.x, x.y);
+}
+
+PATCHLAB_LANES_CLONES
+void CentralWeight::weight_lanes(const Lane& u, const Lane& v, Jet* out) const {
+  const JetLanes w = weight_at(u, v);
+  for (int b = 0; b < kLanes; ++b) out[b] = lane(w, b) * scale_;
+}
+
+PATCHLAB_LANES_WIDE
+void CentralWeight::weight_lanes(const WideLane& u, const WideLane& v, Jet* out) const {
+  const WideJetLanes w = weight_at(u, v);
+  for (int b = 0; b < kWideLanes; ++b) out[b] = lane(w, b) * scale_;
+}
+
+template <class V>
+void CentralWeight::weight_blocks(std::span<const Vec2> xs, std::span<Jet> out) const {
+  constexpr int width = lane_count<V>;
+  Jet block[width];
+  for (std::size_t first = 0; first < xs.size(); first += width) {
+    const int count = static_cast<int>(std::min<std::size_t>(width, xs.size() - first));
+    V u = V{} + peak_.x, v = V{} + peak_.y;  // padding: a point inside
+    uint32_t at_vertex = 0;
+    for (int b = 0; b < count; ++b) {
+      const Vec2 x = xs[first + b];
+      if (std::find(vertices_.begin(), vertices_.end(), x) != vertices_.end())
+        at_vertex |= 1u << b;
+      else
+        u[b] = x.x, v[b] = x.y;
+    }
+    weight_lanes(u, v, block);
+    for (int b = 0; b < count; ++b) out[first + b] = at_vertex >> b & 1u ? Jet{} : block[b];
+  }
+}
+
+void CentralWeight::evaluate_many(std::span<const Vec2> xs, std::span<Jet> out) const {
+  if (wide_lanes())
+    weight_blocks<WideLane>(xs, out);
+  else
+    weight_blocks<Lane>(xs, out);
 }
 
 }  // namespace pl

@@ -22,10 +22,12 @@
 // per sample: one square root per vertex, a reciprocal per side.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "core/domain/concave_polygon.hpp"
 #include "core/math/jet.hpp"
+#include "core/math/lanes.hpp"
 #include "core/math/vec.hpp"
 
 namespace pl {
@@ -41,6 +43,8 @@ class CentralWeight {
   Jet operator()(Vec2 x) const { return unnormalised(x) * scale_; }
   // w(x) itself.
   Jet unnormalised(Vec2 x) const;
+  // operator() at every point, a block of points at a time in SIMD lanes: the same numbers.
+  void evaluate_many(std::span<const Vec2> xs, std::span<Jet> out) const;
   // Where the weight peaks (1 there), and 1 / w there; scale() is 0 if no finite positive maximum
   // was found (a degenerate domain), and then operator() is 0 everywhere.
   Vec2 peak() const { return peak_; }
@@ -51,6 +55,14 @@ class CentralWeight {
     Vec2 a, e;      // the start vertex and the unit direction
     double length;  // |b - a|
   };
+  // w at one sample (T = double) or one per lane, off the vertices.
+  template <class T>
+  JetOf<T> weight_at(const T& u, const T& v) const;
+  void weight_lanes(const Lane& u, const Lane& v, Jet* out) const;
+  void weight_lanes(const WideLane& u, const WideLane& v, Jet* out) const;
+  template <class V>
+  void weight_blocks(std::span<const Vec2> xs, std::span<Jet> out) const;
+
   std::vector<Vec2> vertices_;
   std::vector<Side> sides_;
   double reach_ = 1;  // c above

@@ -190,9 +190,23 @@ SurfaceJet GBInteriorPatch::evaluate(Vec2 x) const {
 }
 
 void GBInteriorPatch::evaluate_many(std::span<const Vec2> xs, std::span<SurfaceJet> out) const {
+  // add_displacement()'s sums in its order, each part batched: the numbers evaluate() gives.
   filling_.evaluate_many(xs, out);
-  if (displaced_points_ == 0 && !(centre_ && offset(0) != Vec3(0))) return;
-  for (std::size_t i = 0; i < xs.size() && i < out.size(); ++i) add_displacement(xs[i], out[i]);
+  if (displaced_points_ > 0) {
+    std::vector<SurfaceJet> d(xs.size());
+    blends_->evaluate_many(xs, d);
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+      SurfaceJet& s = out[i];
+      s.p += d[i].p, s.su += d[i].su, s.sv += d[i].sv;
+      s.suu += d[i].suu, s.suv += d[i].suv, s.svv += d[i].svv;
+    }
+  }
+  if (centre_ && offset(0) != Vec3(0)) {
+    const Vec3 c = offset(0);
+    std::vector<Jet> w(xs.size());
+    centre_weight_.evaluate_many(xs, w);
+    for (std::size_t i = 0; i < xs.size(); ++i) add_scaled(out[i], w[i], c);
+  }
 }
 
 void GBInteriorPatch::influence(std::size_t k, std::span<const Vec2> xs, std::span<Jet> out) const {

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/patch/gb/blend.hpp"
+#include "core/patch/gb/ribbon_local.hpp"
 #include "core/patch/gb/shared_basis.hpp"
 #include "core/patch/gb/vertex_limits.hpp"
 
@@ -21,6 +22,8 @@ const ConcavePolygonDomain& checked(const ConcavePolygonDomain& domain) {
                                 std::to_string(domain.side_count()));
   return domain;
 }
+
+bool is_convex(const ConcavePolygonDomain& d);
 
 }  // namespace
 
@@ -72,6 +75,7 @@ GBRibbonPatch::GBRibbonPatch(ConcavePolygonDomain domain,
     for (int k = 0; k < layers_[i]; ++k)
       for (int j = 0; j <= degree_[i]; ++j)
         if (k > 0 || j < degree_[i]) points_[index(i, j, k)] = ribbons[i][k][j];
+  convex_ = is_convex(domain_);
   check_parameterisation();
 }
 
@@ -106,24 +110,7 @@ std::vector<BezierCurve> GBRibbonPatch::boundary_curves() const {
   return c;
 }
 
-namespace {
-
-// The local parameters of every side at x: lambda, h, and the corner weights alpha of the
-// squared variant (blend.hpp: w = h^2).
-struct RibbonLocal {
-  Scratch<Jet, GBRibbonPatch::kMaxSides> lam, h, alpha;
-  RibbonLocal(const MeanValueParameters& params, Vec2 x) {
-    const int n = params.sides();
-    params.evaluate(x, std::span(lam.data(), n), {}, std::span(h.data(), n));
-    Scratch<Jet, GBRibbonPatch::kMaxSides> h2;
-    for (int i = 0; i < n; ++i) h2[i] = h[i] * h[i];
-    corner_alphas(n, h2.data(), alpha.data());
-  }
-};
-
-}  // namespace
-
-void GBRibbonPatch::evaluate_many(std::span<const Vec2> xs, std::span<SurfaceJet> out) const {
+void GBRibbonPatch::evaluate_shared(std::span<const Vec2> xs, std::span<SurfaceJet> out) const {
   std::string layout = kType;
   layout += '|';
   layout += domain_.key();
@@ -166,7 +153,7 @@ void GBRibbonPatch::basis(Vec2 x, std::span<Jet> out) const {
 Jet GBRibbonPatch::blends(Vec2 x, std::span<Jet> out) const {
   const int n = sides();
   std::fill(out.begin(), out.end(), Jet(0.0));
-  const RibbonLocal L(params_, x);
+  const RibbonLocalOf<double> L(params_, x.x, x.y);
   Jet sum(0.0);
   RibbonPowers t;
   for (int i = 0; i < n; ++i) {
@@ -184,93 +171,6 @@ Jet GBRibbonPatch::blends(Vec2 x, std::span<Jet> out) const {
     }
   }
   return sum;
-}
-
-SurfaceJet GBRibbonPatch::evaluate(Vec2 x) const {
-  const int n = sides();
-  const auto& v = domain_.vertices();
-  // At a vertex the weights are 0/0 and basis() has the exact corner limits.
-  for (int i = 0; i < n; ++i)
-    if (x == v[i]) return Patch::evaluate(x);
-  // S = N / W with N = sum b_jk C_jk, W = sum b_jk, summed directly instead of normalising every
-  // basis function (no per-sample heap allocation, no pow() per term). Off the limit case,
-  //   b_jk = [binom(d, j) lambda_i^j lambda_i-1^(d-j) D_i^(l-d) mu_j] [binom(m, k) h_i^k
-  //          D_i^(l-1-k)] = a_j H_k,
-  // so N_i = sum_k H_k (sum_j a_j C_jk) and W_i = (sum_j a_j)(sum_k H_k): a few jet products
-  // per row and per j instead of several per term. The lowest power of D (negative for d > l) goes
-  // with the lambdas, as in basis(), so the huge 1 / D^(d-l) near other ribbons' sides meets the
-  // tiny lambda powers first instead of overflowing with h's. Equal to the basis() sum up to
-  // rounding.
-  const RibbonLocal L(params_, x);
-  // Summed relative to the corner point of the largest lambda: near a corner the two ribbons
-  // meeting there give that point weights whose second derivatives are huge (those of mu grow
-  // like 1 / distance^2) and cancel only in their sum. Multiplied by the point before summing,
-  // the cancellation would cost ~|C| 1e-16 / distance^2 (worse than basis(), which adds the two
-  // weights first); relative to the point itself those terms are exactly zero.
-  int near = 0;
-  for (int i = 1; i < n; ++i)
-    if (L.lam[i].f > L.lam[near].f) near = i;
-  const Vec3 origin = points_[offset_[(near + 1) % n]];
-  Jet w(0.0), sx(0.0), sy(0.0), sz(0.0);
-  RibbonPowers t;
-  Scratch<Jet, kMaxDegree + 1> A;
-  for (int i = 0; i < n; ++i) {
-    const int d = degree_[i], l = layers_[i], m = 2 * l - 1;
-    const Jet& prev = L.lam[i == 0 ? n - 1 : i - 1];
-    t.build(L.lam[i], prev, prev + L.lam[i], L.h[i], d, l);
-    // Storage of C^i_{j,k}: see index(); row 0 ends at the next ribbon's first point.
-    const std::size_t row0 = offset_[i], end0 = offset_[(i + 1) % n], inner = offset_[i] + d;
-    const auto point_at = [&](int j, int k) -> Vec3 {
-      if (k > 0) return points_[inner + (k - 1) * (d + 1) + j] - origin;
-      return points_[j < d ? row0 + j : end0] - origin;
-    };
-    if (t.on_side && d > l) {
-      // x on a side where D_i vanishes and some exponent of D_i is negative: the terms are the
-      // one-sided limits of homogeneous(), which do not factor; this is rare (boundary
-      // samples), so sum term by term as basis() does.
-      for (int k = 0; k < l; ++k) {
-        const Jet hk = binomial(m, k) * t.hp(k);
-        for (int j = 0; j <= d; ++j) {
-          const Jet b = weighted(binomial(d, j) * homogeneous(t, j, d - j, m - k - d) * hk,
-                                 ribbon_mu(d, j), L.alpha.data(), i, n);
-          const Vec3 c = point_at(j, k);
-          sx += b * c.x, sy += b * c.y, sz += b * c.z;
-          w += b;
-        }
-      }
-      continue;
-    }
-    Jet asum(0.0), hsum(0.0);
-    for (int j = 0; j <= d; ++j) {
-      // homogeneous(t, j, d - j, l - d) off the limit case.
-      A[j] =
-          weighted(binomial(d, j) * (t.la(j) * t.lb(d - j) * (l >= d ? t.dp(l - d) : t.rp(d - l))),
-                   ribbon_mu(d, j), L.alpha.data(), i, n);
-      asum += A[j];
-    }
-    // Rows first: l jet products per coordinate instead of d + 1 (l <= d + 1 in practice).
-    for (int k = 0; k < l; ++k) {
-      const Jet Hk = binomial(m, k) * t.hp(k) * t.dp(l - 1 - k);
-      hsum += Hk;
-      Jet vx(0.0), vy(0.0), vz(0.0);
-      for (int j = 0; j <= d; ++j) {
-        const Vec3 c = point_at(j, k);
-        vx += A[j] * c.x, vy += A[j] * c.y, vz += A[j] * c.z;
-      }
-      sx += Hk * vx, sy += Hk * vy, sz += Hk * vz;
-    }
-    w += asum * hsum;
-  }
-  const Jet inv = reciprocal(w);
-  const Jet px = sx * inv, py = sy * inv, pz = sz * inv;
-  SurfaceJet s;
-  s.p = origin + Vec3(px.f, py.f, pz.f);
-  s.su = {px.fu, py.fu, pz.fu};
-  s.sv = {px.fv, py.fv, pz.fv};
-  s.suu = {px.fuu, py.fuu, pz.fuu};
-  s.suv = {px.fuv, py.fuv, pz.fuv};
-  s.svv = {px.fvv, py.fvv, pz.fvv};
-  return s;
 }
 
 namespace {
@@ -357,7 +257,7 @@ void GBRibbonPatch::check_parameterisation() const {
   // lambda_i vanishes inside the domain, a ribbon with d_i > l_i has a pole (its blend carries
   // 1 / D_i^(d_i - l_i)); a ribbon with d_i <= l_i is polynomial in the coordinates and has
   // none. Every blend is finite then, and the patch needs only a positive sum of blends.
-  if (is_convex(domain_)) return;  // positive coordinates, positive blends
+  if (convex_) return;  // positive coordinates, positive blends
   // h_s must grow into the domain from side s: its slope is the sum of the other coordinates'
   // slopes, and behind reflex corners some of those are negative. Where they cancel, ribbon s
   // has no cross-boundary direction (the surface folds along the side): no layer helps.

@@ -23,10 +23,13 @@
 // weights are 0/0, the corner limits (vertex_limits.hpp).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "core/domain/concave_polygon.hpp"
 #include "core/param/mean_value.hpp"
+#include "core/patch/gb/ribbon.hpp"
+#include "core/patch/gb/ribbon_local.hpp"
 #include "core/patch/gb/ribbon_powers.hpp"
 #include "core/patch/patch.hpp"
 
@@ -55,10 +58,12 @@ class GBRibbonPatch final : public PatchType<GBRibbonPatch> {
   // sum b C / sum b summed directly (power tables per ribbon, no heap allocation per sample);
   // equal to the basis() sum up to rounding, and the basis() corner limits at the vertices.
   SurfaceJet evaluate(Vec2 x) const override;
-  // sum phi_k C_k over the basis at each point: the basis kept for a block of points that
-  // another patch of the same domain and layout asked for before (the convex faces of a network
-  // at one density: shared_basis.hpp), else evaluated here; the same numbers either way. Agrees
-  // with evaluate() to rounding.
+  // evaluate() at many points. A convex face of a network shares its basis with the faces of the
+  // same domain and layout (the convex faces at one density: shared_basis.hpp) and sums
+  // phi_k C_k over it: the basis kept for a block of points that another patch asked for before,
+  // else evaluated here, the same numbers either way. A concave face, and a face evaluated on its
+  // own (under a SharedBasisBypass), runs evaluate() a block of points at a time in SIMD lanes:
+  // evaluate()'s numbers bit for bit. The two agree to rounding.
   void evaluate_many(std::span<const Vec2> xs, std::span<SurfaceJet> out) const override;
   std::vector<BezierCurve> boundary_curves() const override;
 
@@ -81,10 +86,24 @@ class GBRibbonPatch final : public PatchType<GBRibbonPatch> {
   void check_parameterisation() const;
   // The blends b^i_{j,k} at x (not a vertex), unnormalised, and their sum.
   Jet blends(Vec2 x, std::span<Jet> out) const;
+  // The surface at one sample (T = double) or one per lane (out[b]), not at a vertex; returns
+  // the lanes on a side where a ribbon's D vanishes, left to the scalar path (none for double,
+  // which sums those limits itself).
+  template <class T>
+  uint32_t surface_at(const T& u, const T& v, SurfaceJet* out) const;
+  uint32_t evaluate_lanes(const Lane& u, const Lane& v, SurfaceJet* out) const;
+  uint32_t evaluate_lanes(const WideLane& u, const WideLane& v, SurfaceJet* out) const;
+  // evaluate_many() through the shared basis.
+  void evaluate_shared(std::span<const Vec2> xs, std::span<SurfaceJet> out) const;
+  template <class T>
+  uint32_t quotient_form(const RibbonLocalOf<T>& L, const T* origin, VectorJet<T, 4>& S) const;
+  template <class V>
+  void evaluate_blocks(std::span<const Vec2> xs, std::span<SurfaceJet> out) const;
 
   ConcavePolygonDomain domain_;
   MeanValueParameters params_;
   std::vector<int> degree_, layers_;
+  bool convex_ = false;  // every corner of the domain turns left (quotient_form() applies)
   std::vector<std::size_t> offset_;
 };
 

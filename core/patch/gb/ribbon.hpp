@@ -21,21 +21,22 @@
 namespace pl {
 
 // A vector-valued function with its first and second derivatives, per lane: c[r][x], rows
-// r = value, d1, d2, d11, d12, d22 in the variables at hand ((s, h) or (u, v)), x = coordinate.
-template <class T>
+// r = value, d1, d2, d11, d12, d22 in the variables at hand ((s, h) or (u, v)), x = coordinate
+// (C of them: 3 for a point, 4 for a point and its weight).
+template <class T, int C = 3>
 struct VectorJet {
-  T c[6][3];
+  T c[6][C];
 };
 
-template <class T>
-PATCHLAB_LANES_INLINE void clear(VectorJet<T>& a) {
+template <class T, int C>
+PATCHLAB_LANES_INLINE void clear(VectorJet<T, C>& a) {
   for (auto& row : a.c)
     for (T& x : row) x = T{};
 }
 
 // Sample b of a (u, v) vector jet as a SurfaceJet.
-template <class T>
-PATCHLAB_LANES_INLINE SurfaceJet surface_jet(const VectorJet<T>& S, int b) {
+template <class T, int C>
+PATCHLAB_LANES_INLINE SurfaceJet surface_jet(const VectorJet<T, C>& S, int b) {
   SurfaceJet o;
   Vec3* rows[6] = {&o.p, &o.su, &o.sv, &o.suu, &o.suv, &o.svv};
   for (int r = 0; r < 6; ++r) {
@@ -48,13 +49,13 @@ PATCHLAB_LANES_INLINE SurfaceJet surface_jet(const VectorJet<T>& S, int b) {
 }
 
 // The (u, v) jet of G(s(u, v), h(u, v)) from its (s, h) jet, coordinate by coordinate.
-template <class T>
-PATCHLAB_LANES_INLINE void to_uv(const VectorJet<T>& G, const JetOf<T>& s, const JetOf<T>& h,
-                                 VectorJet<T>& out) {
+template <class T, int C>
+PATCHLAB_LANES_INLINE void to_uv(const VectorJet<T, C>& G, const JetOf<T>& s, const JetOf<T>& h,
+                                 VectorJet<T, C>& out) {
   const T ss_u = s.fu * s.fu, sh_u = 2 * s.fu * h.fu, hh_u = h.fu * h.fu;
   const T ss_uv = s.fu * s.fv, sh_uv = s.fu * h.fv + s.fv * h.fu, hh_uv = h.fu * h.fv;
   const T ss_v = s.fv * s.fv, sh_v = 2 * s.fv * h.fv, hh_v = h.fv * h.fv;
-  for (int c = 0; c < 3; ++c) {
+  for (int c = 0; c < C; ++c) {
     const T g = G.c[0][c], gs = G.c[1][c], gh = G.c[2][c];
     const T gss = G.c[3][c], gsh = G.c[4][c], ghh = G.c[5][c];
     out.c[0][c] = g;
@@ -66,24 +67,25 @@ PATCHLAB_LANES_INLINE void to_uv(const VectorJet<T>& G, const JetOf<T>& s, const
   }
 }
 
-template <class T>
-PATCHLAB_LANES_INLINE void add_to(VectorJet<T>& S, const VectorJet<T>& D) {
+template <class T, int C>
+PATCHLAB_LANES_INLINE void add_to(VectorJet<T, C>& S, const VectorJet<T, C>& D) {
   for (int r = 0; r < 6; ++r)
-    for (int c = 0; c < 3; ++c) S.c[r][c] += D.c[r][c];
+    for (int c = 0; c < C; ++c) S.c[r][c] += D.c[r][c];
 }
 
 // D = A - B.
-template <class T>
-PATCHLAB_LANES_INLINE void difference(const VectorJet<T>& A, const VectorJet<T>& B,
-                                      VectorJet<T>& D) {
+template <class T, int C>
+PATCHLAB_LANES_INLINE void difference(const VectorJet<T, C>& A, const VectorJet<T, C>& B,
+                                      VectorJet<T, C>& D) {
   for (int r = 0; r < 6; ++r)
-    for (int c = 0; c < 3; ++c) D.c[r][c] = A.c[r][c] - B.c[r][c];
+    for (int c = 0; c < C; ++c) D.c[r][c] = A.c[r][c] - B.c[r][c];
 }
 
 // S += D w, w a scalar (u, v) jet: the product rule.
-template <class T>
-PATCHLAB_LANES_INLINE void add_times(VectorJet<T>& S, const VectorJet<T>& D, const JetOf<T>& w) {
-  for (int c = 0; c < 3; ++c) {
+template <class T, int C>
+PATCHLAB_LANES_INLINE void add_times(VectorJet<T, C>& S, const VectorJet<T, C>& D,
+                                     const JetOf<T>& w) {
+  for (int c = 0; c < C; ++c) {
     const T p = D.c[0][c], su = D.c[1][c], sv = D.c[2][c];
     S.c[0][c] += p * w.f;
     S.c[1][c] += su * w.f + p * w.fu;

@@ -8,9 +8,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "core/math/bernstein.hpp"
 #include "core/math/jet.hpp"
+#include "core/math/lanes.hpp"
 #include "core/math/scratch.hpp"
 
 namespace pl {
@@ -20,56 +22,82 @@ inline constexpr int kMaxRibbonDegree = 30, kMaxRibbonLayers = 15;
 
 // a^0 .. a^top (top <= kCap - 1), each by repeated multiplication from 1 like pow(a, k), so a
 // table entry is bitwise the value pow() gives. Exponents past the table continue the
-// multiplication, so the values stay those of pow() for any degree.
-class Powers {
+// multiplication, so the values stay those of pow() for any degree. J = Jet for one sample, or
+// JetLanesOf<V> for a block of samples.
+template <class J>
+class PowersOf {
  public:
   static constexpr int kCap = 2 * kMaxRibbonLayers + 2;
   static_assert(kCap > kMaxRibbonDegree);
 
-  void build(const Jet& a, int top) {
+  PATCHLAB_LANES_INLINE void build(const J& a, int top) {
     base_ = a;
     top_ = std::min(std::max(top, 0), kCap - 1);
-    p_[0] = Jet(1.0);
-    for (int k = 1; k <= top_; ++k) p_[k] = p_[k - 1] * a;
+    p_[0] = constant_one();
+    for (int k = 1; k <= top_; ++k) p_[k] = product(p_[k - 1], a);
   }
-  const Jet& base() const { return base_; }
-  Jet operator()(int k) const {
+  const J& base() const { return base_; }
+  PATCHLAB_LANES_INLINE J operator()(int k) const {
     if (k <= top_) return p_[k];
-    Jet r = p_[top_];
-    for (int i = top_; i < k; ++i) r = r * base_;
+    J r = p_[top_];
+    for (int i = top_; i < k; ++i) r = product(r, base_);
     return r;
   }
 
  private:
-  Scratch<Jet, kCap> p_;
-  Jet base_;
+  static J constant_one() {
+    J one{};
+    one.f += 1.0;
+    return one;
+  }
+  Scratch<J, kCap> p_;
+  J base_;
   int top_ = 0;
 };
+using Powers = PowersOf<Jet>;
 
-// The power tables of ribbon i at one sample: lambda_i, lambda_{i-1}, D = lambda_{i-1} +
-// lambda_i, 1 / D and h_i, and whether x lies on a side where D vanishes.
-struct RibbonPowers {
-  // Where |D| / |grad D| (about the distance to a side) is below this, x is on that side.
-  static constexpr double kOnSide = 1e-12;
+// The samples (bit b for sample b; bit 0 for one sample) where D = lambda_{i-1} + lambda_i
+// vanishes: |D| / |grad D| (about the distance to a side where it does) below kOnSide.
+inline constexpr double kOnSide = 1e-12;
+template <class J>
+PATCHLAB_LANES_INLINE uint32_t on_side_lanes(const J& D) {
+  uint32_t on = 0;
+  for (int b = 0; b < lane_count<decltype(D.f)>; ++b) {
+    const double f = lane_value(D.f, b), fu = lane_value(D.fu, b), fv = lane_value(D.fv, b);
+    // hypot() is slow and needed only near the sides: 2 (|fu| + |fv|) >= 2 hypot(fu, fv), far
+    // beyond any rounding, so where the cheap test says "off the side" the hypot() test does too.
+    if (!(std::fabs(f) > 2 * kOnSide * (std::fabs(fu) + std::fabs(fv))) &&
+        !(std::fabs(f) > kOnSide * std::hypot(fu, fv)))
+      on |= 1u << b;
+  }
+  return on;
+}
 
-  Powers la, lb, dp, rp, hp;
-  bool on_side = false;
+// The power tables of ribbon i at one sample (T = double) or a block of samples (a lane type):
+// lambda_i, lambda_{i-1}, D = lambda_{i-1} + lambda_i, 1 / D and h_i, and which samples lie on
+// a side where D vanishes.
+template <class T>
+struct RibbonPowersOf {
+  using J = JetOf<T>;
 
-  void build(const Jet& lam_i, const Jet& lam_prev, const Jet& D, const Jet& h, int d, int l) {
+  PowersOf<J> la, lb, dp, rp, hp;
+  uint32_t on_side = 0;  // bit b: sample b is on such a side (bit 0 for one sample)
+
+  PATCHLAB_LANES_INLINE void build(const J& lam_i, const J& lam_prev, const J& D, const J& h, int d,
+                                   int l) {
     const int m = 2 * l - 1;
     la.build(lam_i, d);
     lb.build(lam_prev, d);
     hp.build(h, l - 1);
     // Exponents of D: m - k - d for k = 0 .. l - 1 in basis(), l - d and l - 1 - k in evaluate().
     dp.build(D, std::max(m - d, l - 1));
-    // hypot() is slow and needed only near the sides: 2 (|fu| + |fv|) >= 2 hypot(fu, fv), far
-    // beyond any rounding, so where the cheap test says "off the side" the hypot() test does too.
-    on_side = !(std::fabs(D.f) > 2 * kOnSide * (std::fabs(D.fu) + std::fabs(D.fv))) &&
-              !(std::fabs(D.f) > kOnSide * std::hypot(D.fu, D.fv));
+    on_side = on_side_lanes(D);
     // 1 / D is only needed (and only finite) off the sides where D vanishes.
-    if (d - l > 0 && !on_side) rp.build(reciprocal(D), d - l);
+    constexpr uint32_t all = lane_count<T> == 32 ? ~0u : (1u << lane_count<T>)-1;
+    if (d - l > 0 && on_side != all) rp.build(reciprocal(D), d - l);
   }
 };
+using RibbonPowers = RibbonPowersOf<double>;
 
 // la^ja lb^jb D^e with D = la + lb, total degree q = ja + jb + e >= 2. Where D vanishes (x on a
 // side away from this ribbon, so la and lb vanish too, all to first order along the same normal

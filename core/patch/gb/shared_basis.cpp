@@ -115,6 +115,10 @@ SharedBasisBypass::~SharedBasisBypass() {
   bypassed = was_;
 }
 
+bool shared_basis_bypassed() {
+  return bypassed;
+}
+
 SharedBasisUse shared_basis_use() {
   return blocks().use();
 }

@@ -33,8 +33,10 @@ std::shared_ptr<const std::vector<Jet>> shared_basis_block(
     const std::function<void(Vec2, std::span<Jet>)>& build);
 
 // While one lives, this thread neither finds nor keeps blocks: its evaluations are those of a patch
-// on its own. Throughput figures use it, so that they compare schemes, not a cache that only some
-// of them have (evaluating the same face again would otherwise time the kept basis).
+// on its own (a gb-ribbons patch then runs its SIMD form, gb_ribbon_patch.hpp), and so are the
+// chunks of a PatchEvaluator or evaluate_scene() it starts, on whichever thread they run.
+// Throughput figures use it, so that they compare schemes, not a cache that only some of them
+// have (evaluating the same face again would otherwise time the kept basis).
 class SharedBasisBypass {
  public:
   SharedBasisBypass();
@@ -45,6 +47,9 @@ class SharedBasisBypass {
  private:
   bool was_;
 };
+
+// Whether a SharedBasisBypass lives on this thread.
+bool shared_basis_bypassed();
 
 // How many blocks are kept now, and their bytes (tests, benchmarks).
 struct SharedBasisUse {
