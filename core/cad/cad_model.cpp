@@ -76,6 +76,8 @@ std::string fit_end_text(FitEnd end, const FitTolerance& tol) {
       return "converged";
     case FitEnd::Spans:
       return "no span left to split within " + std::to_string(tol.max_spans) + " per direction";
+    case FitEnd::Curve:
+      return "a side curve's own deviation bends the surface past the tolerance";
     case FitEnd::Work:
       return "its work bound of " + short_number(double(tol.max_work)) + " grid points reached";
     case FitEnd::SharedWork:

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "core/analysis/scene_analysis.hpp"  // angle_deg
+#include "core/cad/fit_check.hpp"
 
 namespace pl {
 
@@ -286,44 +287,27 @@ SurfaceFit fit_surface(const SurfaceFunction& f, const std::array<CadCurve, 4>& 
       for (std::size_t i = 1; i + 1 < nu; ++i)
         for (std::size_t j = 1; j + 1 < nv; ++j) s.points[i * nv + j][c] = Xin(i - 1, j - 1);
     }
-    // Check on a grid four times denser than the samples; where it fails, bisect the span in
-    // the direction in which the failing cell is longer in space (both when comparable).
+    // Check on a grid four times denser than the samples; where it fails, bisect the spans
+    // along which the deviation varies (fit_check.hpp).
     std::vector<SurfacePoint> truth, fit;
     cache.evaluate(cu.t, cv.t, truth);
     evaluate_grid(s, cu.t, cv.t, fit);
-    const std::vector<double> bu = breaks(U), bv = breaks(V);
-    std::vector<char> fail_u(bu.size() - 1, 0), fail_v(bv.size() - 1, 0);
-    double dp = 0, dn = 0;
-    int singular = 0;
-    for (std::size_t a = 0; a < cu.t.size(); ++a)
-      for (std::size_t b = 0; b < cv.t.size(); ++b) {
-        const std::size_t k = a * cv.t.size() + b;
-        const double ep = glm::length(fit[k].p - truth[k].p);
-        double en = 0;
-        const Vec3 nt = glm::cross(truth[k].su, truth[k].sv);
-        if (glm::length(nt) > 1e-14 * glm::length(truth[k].su) * glm::length(truth[k].sv))
-          en = angle_deg(glm::cross(fit[k].su, fit[k].sv), nt);
-        else
-          ++singular;
-        dp = std::max(dp, ep), dn = std::max(dn, en);
-        if (ep <= tol.position && en <= tol.normal_deg) continue;
-        const int ru = cu.span[a], rv = cv.span[b];
-        const double lu = glm::length(truth[k].su) * (bu[ru + 1] - bu[ru]);
-        const double lv = glm::length(truth[k].sv) * (bv[rv + 1] - bv[rv]);
-        if (lu >= 0.5 * lv) fail_u[ru] = 1;
-        if (lv >= 0.5 * lu) fail_v[rv] = 1;
-      }
+    const FitCheck check = check_fit(truth, fit, {cu.t, 4 * su}, {cv.t, 4 * sv}, tol);
     out.surface = std::move(s);
-    out.position_deviation = dp, out.normal_deviation_deg = dn;
+    out.position_deviation = check.position, out.normal_deviation_deg = check.normal_deg;
     out.fit_samples = static_cast<int>(std::max(tu.t.size(), tv.t.size()));
     out.check_points = static_cast<int>(std::max(cu.t.size(), cv.t.size()));
-    out.singular_normals = singular;
-    out.converged = dp <= tol.position && dn <= tol.normal_deg;
+    out.singular_normals = check.singular;
+    out.converged = check.within(tol);
     out.end = out.converged ? FitEnd::Converged : FitEnd::Spans;
     if (out.converged) break;
+    if (check.pinned_bend) {
+      out.end = FitEnd::Curve;
+      break;
+    }
     // The limit counts the spans this fit adds to those of the sides.
-    const bool more_u = bisect_spans(p, U, fail_u, tol.max_spans + span_count(base_u));
-    const bool more_v = bisect_spans(q, V, fail_v, tol.max_spans + span_count(base_v));
+    const bool more_u = bisect_spans(p, U, check.split_u, tol.max_spans + span_count(base_u));
+    const bool more_v = bisect_spans(q, V, check.split_v, tol.max_spans + span_count(base_v));
     if (!more_u && !more_v) break;
   }
   return out;

@@ -40,6 +40,7 @@ struct FitTolerance {
 enum class FitEnd {
   Converged,   // within the tolerance
   Spans,       // no span left to split (max_spans, or spans too short)
+  Curve,       // a fitted side curve's error bends the surface past the tolerance (fit_check.hpp)
   Work,        // the next refinement would pass max_work
   SharedWork,  // the next refinement would pass max_shared_work
   Deadline,    // the deadline passed
