@@ -243,6 +243,11 @@ SurfaceFit fit_surface(const SurfaceFunction& f, const std::array<CadCurve, 4>& 
   GridCache cache(f);
   std::vector<double> U = merge_knots(p, base_u, uniform_knots(p, 1));
   std::vector<double> V = merge_knots(q, base_v, uniform_knots(q, 1));
+  // The check grid is four times as dense as the samples for the verdict, but only twice while
+  // the fit still misses: that is enough to see where it misses, and a fit that needs many
+  // rounds (a singular corner of a GB face halves its deviation per round) paid the dense grid
+  // at each. Once the sparse grid is met, the dense one decides; a fit it fails keeps to it.
+  int check_density = 2;
   while (true) {
     const std::size_t nu = U.size() - p - 1, nv = V.size() - q - 1;
     // Boundary rows: the sides refined to the surface's knots.
@@ -261,7 +266,7 @@ SurfaceFit fit_surface(const SurfaceFunction& f, const std::array<CadCurve, 4>& 
     const int su = fit_samples_per_span(p, span_count(U)),
               sv = fit_samples_per_span(q, span_count(V));
     const Samples tu = span_samples(U, su), tv = span_samples(V, sv);
-    const Samples cu = span_samples(U, 4 * su), cv = span_samples(V, 4 * sv);
+    Samples cu = span_samples(U, check_density * su), cv = span_samples(V, check_density * sv);
     // The samples and the check grid, bounded before the work.
     if (const auto end =
             take_work(out.work, tu.t.size() * tv.t.size() + cu.t.size() * cv.t.size(), tol)) {
@@ -287,20 +292,30 @@ SurfaceFit fit_surface(const SurfaceFunction& f, const std::array<CadCurve, 4>& 
       for (std::size_t i = 1; i + 1 < nu; ++i)
         for (std::size_t j = 1; j + 1 < nv; ++j) s.points[i * nv + j][c] = Xin(i - 1, j - 1);
     }
-    // Check on a grid four times denser than the samples; where it fails, bisect the spans
-    // along which the deviation varies (fit_check.hpp).
-    std::vector<SurfacePoint> truth, fit;
-    cache.evaluate(cu.t, cv.t, truth);
-    evaluate_grid(s, cu.t, cv.t, fit);
-    const FitCheck check = check_fit(truth, fit, {cu.t, 4 * su}, {cv.t, 4 * sv}, tol);
+    // Check; where the fit misses, bisect the spans along which the deviation varies
+    // (fit_check.hpp).
+    const auto check_on_grid = [&] {
+      std::vector<SurfacePoint> truth, fit;
+      cache.evaluate(cu.t, cv.t, truth);
+      evaluate_grid(s, cu.t, cv.t, fit);
+      return check_fit(truth, fit, {cu.t, check_density * su}, {cv.t, check_density * sv}, tol);
+    };
+    FitCheck check = check_on_grid();
+    std::optional<FitEnd> refused;
+    if (check_density == 2 && check.within(tol)) {
+      check_density = 4;
+      cu = span_samples(U, 4 * su), cv = span_samples(V, 4 * sv);
+      refused = take_work(out.work, cu.t.size() * cv.t.size(), tol);
+      if (!refused) check = check_on_grid();
+    }
     out.surface = std::move(s);
     out.position_deviation = check.position, out.normal_deviation_deg = check.normal_deg;
     out.fit_samples = static_cast<int>(std::max(tu.t.size(), tv.t.size()));
     out.check_points = static_cast<int>(std::max(cu.t.size(), cv.t.size()));
     out.singular_normals = check.singular;
-    out.converged = check.within(tol);
-    out.end = out.converged ? FitEnd::Converged : FitEnd::Spans;
-    if (out.converged) break;
+    out.converged = !refused && check.within(tol);
+    out.end = out.converged ? FitEnd::Converged : refused ? *refused : FitEnd::Spans;
+    if (out.converged || refused) break;
     if (check.pinned_bend) {
       out.end = FitEnd::Curve;
       break;

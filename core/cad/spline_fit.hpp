@@ -56,7 +56,8 @@ using SurfaceFunction = std::function<void(std::span<const Vec2>, std::span<Surf
 using CurveFunction = std::function<void(std::span<const double>, std::span<CurvePoint>)>;
 
 // Fit samples per knot span (in each direction) for degree p and `spans` spans: two where the
-// spans alone give enough equations, else p. The check grid has four times as many.
+// spans alone give enough equations, else p. The check grid has four times as many (a surface
+// fit's has twice as many while it misses; fit_surface).
 int fit_samples_per_span(int p, int spans);
 
 struct CurveFit {
@@ -74,7 +75,7 @@ CurveFit fit_curve(const CurveFunction& g, int degree, const FitTolerance& tol);
 
 struct SurfaceFit {
   CadSurface surface;
-  double position_deviation = 0;  // largest at the check grid
+  double position_deviation = 0;  // largest at the check grid (the last one checked)
   double normal_deviation_deg = 0;
   int fit_samples = 0;       // per direction (of the final fit)
   int check_points = 0;      // per direction
