@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "cad_test_util.hpp"
 #include "core/cad/cad_model.hpp"
 #include "core/cad/domain_quads.hpp"
 #include "core/cad/exact_surfaces.hpp"
@@ -118,18 +119,9 @@ TEST(CadPieces, PinnedFitReachesTheToleranceAndKeepsItsSidesExactly) {
   // Sides: fitted curves (themselves checked), then pinned.
   std::array<CadCurve, 4> sides;
   for (int s = 0; s < 4; ++s) {
-    const CurveFunction g = [&, s](std::span<const double> t, std::span<CurvePoint> out) {
-      std::vector<Vec2> uv;
-      for (double x : t)
-        uv.push_back(s == 0 ? Vec2(x, 0) : s == 1 ? Vec2(1, x) : s == 2 ? Vec2(x, 1) : Vec2(0, x));
-      std::vector<SurfacePoint> sp(t.size());
-      f(uv, sp);
-      for (std::size_t k = 0; k < t.size(); ++k)
-        out[k] = {sp[k].p, s % 2 ? sp[k].sv : sp[k].su, Vec3(0)};
-    };
     FitTolerance ct = tol;
     ct.position /= 100;
-    const CurveFit c = fit_curve(g, 3, ct);
+    const CurveFit c = fit_curve(test::side_curve(f, s), 3, ct);
     ASSERT_TRUE(c.converged);
     sides[s] = c.curve;
   }

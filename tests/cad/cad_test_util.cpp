@@ -27,6 +27,18 @@ Deviation surface_deviation(const CadPiece& piece, const BRepAdaptor_Surface& s,
   return d;
 }
 
+CurveFunction side_curve(const SurfaceFunction& f, int s) {
+  return [f, s](std::span<const double> t, std::span<CurvePoint> out) {
+    std::vector<Vec2> uv;
+    for (double x : t)
+      uv.push_back(s == 0 ? Vec2(x, 0) : s == 1 ? Vec2(1, x) : s == 2 ? Vec2(x, 1) : Vec2(0, x));
+    std::vector<SurfacePoint> sp(t.size());
+    f(uv, sp);
+    for (std::size_t k = 0; k < t.size(); ++k)
+      out[k] = {sp[k].p, s % 2 ? sp[k].sv : sp[k].su, Vec3(0)};
+  };
+}
+
 CheckGrid fitted_check_grid(const BRepAdaptor_Surface& s) {
   const Handle(Geom_BSplineSurface) b = s.BSpline();
   auto knots = [](const TColStd_Array1OfReal& k) {

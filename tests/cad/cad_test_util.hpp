@@ -55,6 +55,10 @@ inline PieceTruth piece_truth(const CadPiece& piece, Vec2 uv) {
   return {s.p, xu.x * s.su + xu.y * s.sv, xv.x * s.su + xv.y * s.sv};
 }
 
+// Side s of a surface function as fit_surface numbers them (0: v = 0, 1: u = 1, 2: v = 1,
+// 3: u = 0, each in increasing parameter): position and derivative along the side.
+CurveFunction side_curve(const SurfaceFunction& f, int s);
+
 // Largest deviation of an OCCT surface from a piece: position at equal parameters and the
 // angle between normals (where the patch has one).
 struct Deviation {

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "cad_test_util.hpp"
 #include "core/cad/spline_fit.hpp"
 
 namespace pl {
@@ -21,19 +22,10 @@ int spans(const std::vector<double>& knots) {
 std::array<CadCurve, 4> fitted_sides(const SurfaceFunction& f, double position) {
   std::array<CadCurve, 4> sides;
   for (int s = 0; s < 4; ++s) {
-    const CurveFunction g = [&, s](std::span<const double> t, std::span<CurvePoint> out) {
-      std::vector<Vec2> uv;
-      for (double x : t)
-        uv.push_back(s == 0 ? Vec2(x, 0) : s == 1 ? Vec2(1, x) : s == 2 ? Vec2(x, 1) : Vec2(0, x));
-      std::vector<SurfacePoint> sp(t.size());
-      f(uv, sp);
-      for (std::size_t k = 0; k < t.size(); ++k)
-        out[k] = {sp[k].p, s % 2 ? sp[k].sv : sp[k].su, Vec3(0)};
-    };
     FitTolerance ct;
     ct.position = position;
     ct.normal_deg = 0.01;
-    sides[s] = fit_curve(g, 3, ct).curve;
+    sides[s] = fit_curve(test::side_curve(f, s), 3, ct).curve;
   }
   return sides;
 }
