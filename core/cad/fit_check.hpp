@@ -6,11 +6,12 @@
 // deviation, so a deviation that changes from check point to check point along u asks for knots
 // in u, one that is the same along u but changes along v asks for knots in v (both when the two
 // are comparable). The cell's size in space says nothing about that. At the rim of a many-sided
-// GB face (the normal turns by 60 degrees within a tenth of the domain's radius while the surface
-// moves by a hundredth of that) the cells along the boundary are shortest in space across the
-// rim, which is where they need the knots; bisected by their size, they were split along the side
-// instead, round after round: a ring piece of the 64-sided cap ended with 45 x 24 spans and
-// 368,553 grid points of work, where it needs 20 x 28 and 149,317.
+// GB face (on the 64-sided cap of the unit sphere the normal turns by about 60 degrees within a
+// tenth of the domain's radius from the boundary, while the surface moves by 0.004) the cells
+// along the boundary are shortest in space across the rim, which is where they need the knots;
+// bisected by their size, they were split along the side instead, round after round: a ring
+// piece of that cap ended with 45 x 24 spans and 368,553 grid points of work, where it needs
+// 20 x 28 and 149,317.
 #pragma once
 
 #include <span>
