@@ -96,23 +96,6 @@ void draw_filling(const SidePanel& p, const ContinuityMonitor::Filling& f, std::
 
 }  // namespace
 
-void follow_continuity(ContinuityMonitor& monitor, const SceneViews& views, const Document& doc) {
-  if (!views.ready()) return;
-  // The figures follow the fine surfaces only, once they have settled.
-  std::vector<ContinuityMonitor::Input> inputs;
-  if (views.panels() > 1) {
-    for (int i = 0; i < views.panels(); ++i) {
-      if (!views.panel(i).settled()) return;
-      inputs.push_back(
-          {scheme_title(views.setup().schemes[i]) + " filling", &views.panel(i).fine().surfaces()});
-    }
-  } else {
-    if (!views.settled()) return;
-    inputs.push_back({"", &views.main()->fine().surfaces()});
-  }
-  monitor.follow(doc.scene(), inputs, doc.revision());
-}
-
 namespace {
 
 // The joints of the free curves: which ends meet, the class and the figures (the same as

@@ -45,22 +45,23 @@ double percentile(std::vector<double> v, double q) {
 }  // namespace
 
 int Editor::run_drag_benchmark() {
-  if (!session_.doc().scene().network || session_.doc().scene().network->vertices.empty()) {
+  if (!model_.session().doc().scene().network ||
+      model_.session().doc().scene().network->vertices.empty()) {
     std::fprintf(stderr, "patchlab: --bench-drag needs a scene with a curve network\n");
     return 1;
   }
-  const Network& net = *session_.doc().scene().network;
+  const Network& net = *model_.session().doc().scene().network;
   std::vector<int> valence(net.vertices.size(), 0);
   for (const NetworkEdge& e : net.edges) ++valence.at(e.v[0]), ++valence.at(e.v[1]);
   const int vertex = int(std::max_element(valence.begin(), valence.end()) - valence.begin());
   // The scene is evaluated behind the progress bar, as when a user opens it: frames at the
   // interactive loop's loading pace until it is shown.
-  while (!views_.ready() && (views_.loading() || frames_ < 1)) {
+  while (!model_.views().ready() && (model_.views().loading() || frames_ < 1)) {
     glfwWaitEventsTimeout(0.05);
     frame();
   }
-  if (!views_.ready()) {
-    std::fprintf(stderr, "patchlab: --bench-drag: %s\n", views_.error().c_str());
+  if (!model_.views().ready()) {
+    std::fprintf(stderr, "patchlab: --bench-drag: %s\n", model_.views().error().c_str());
     return 1;
   }
   for (int i = 0; i < kWarmupFrames; ++i) {
@@ -69,9 +70,9 @@ int Editor::run_drag_benchmark() {
   }
   glFinish();
   const PointRef ref = PointRef::vertex(vertex);
-  const Vec3 start = point_position(session_.doc().scene(), ref);
-  const double amplitude = 0.15 * std::max(nav_.camera().scene_radius, 1e-9);
-  session_.doc().begin_drag({ref});
+  const Vec3 start = point_position(model_.session().doc().scene(), ref);
+  const double amplitude = 0.15 * std::max(model_.nav().camera().scene_radius, 1e-9);
+  model_.session().doc().begin_drag({ref});
   std::vector<double> ms;
   double eval_ms = 0;  // the core's share: coarse re-evaluation and mesh arrays
   const double cpu_begin = process_cpu_ms();
@@ -79,17 +80,17 @@ int Editor::run_drag_benchmark() {
   for (int k = 0; k < kDragFrames; ++k) {
     const auto t0 = Clock::now();
     const double a = 2 * 3.141592653589793 * k / 90.0;
-    session_.doc().drag_to(
+    model_.session().doc().drag_to(
         {start + amplitude * Vec3(std::sin(a), 0.5 * std::sin(2 * a), 0.6 * std::cos(a) - 0.6)});
     glfwPollEvents();
     frame();
     glFinish();
-    eval_ms += status_.eval_ms;
+    eval_ms += model_.status().eval_ms;
     ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
   }
   const double total = std::chrono::duration<double>(Clock::now() - t_begin).count();
   const double cpu_ms = (process_cpu_ms() - cpu_begin) / kDragFrames;
-  session_.doc().end_drag();
+  model_.session().doc().end_drag();
   const auto release = Clock::now();
   int settle_frames = 0;
   do {
@@ -97,24 +98,24 @@ int Editor::run_drag_benchmark() {
     frame();
     glFinish();
     ++settle_frames;
-  } while (!views_.settled() && settle_frames < 100);
+  } while (!model_.views().settled() && settle_frames < 100);
   const double settle = std::chrono::duration<double, std::milli>(Clock::now() - release).count();
-  const EvaluatedView& view = *views_.main();
+  const EvaluatedView& view = *model_.views().main();
   std::size_t coarse = 0, fine = 0;
-  for (int i = 0; i < views_.panels(); ++i) {
-    coarse += views_.panel(i).coarse().sample_count();
-    fine += views_.panel(i).fine().sample_count();
+  for (int i = 0; i < model_.views().panels(); ++i) {
+    coarse += model_.views().panel(i).coarse().sample_count();
+    fine += model_.views().panel(i).fine().sample_count();
   }
   std::printf(
       "# drag of vertex %d, %d frames at %dx%d, %d pane(s)%s%s: %zu samples while dragging, %zu "
       "at rest (%s)\n",
-      vertex, kDragFrames, options_.width, options_.height, views_.panels(),
-      views_.panels() > 1 ? " " : "",
-      views_.panels() > 1 ? schemes_keywords(views_.setup()).c_str() : "", coarse, fine,
-      view.density_note().c_str());
+      vertex, kDragFrames, options_.width, options_.height, model_.views().panels(),
+      model_.views().panels() > 1 ? " " : "",
+      model_.views().panels() > 1 ? schemes_keywords(model_.views().setup()).c_str() : "", coarse,
+      fine, view.density_note().c_str());
   std::printf("# mean evaluation per drag frame %.2f ms (the rest is drawing, UI and swap)\n",
               eval_ms / kDragFrames);
-  std::printf("figure editor_panes %d panes\n", views_.panels());
+  std::printf("figure editor_panes %d panes\n", model_.views().panels());
   std::printf("figure editor_drag_fps %.1f fps\n", kDragFrames / total);
   std::printf("figure editor_frame_ms_p50 %.2f ms\n", percentile(ms, 0.5));
   std::printf("figure editor_frame_ms_p95 %.2f ms\n", percentile(ms, 0.95));

@@ -43,18 +43,18 @@
 namespace pl {
 
 void Editor::report_debug_items() {
-  if (!debugging() || debug_.positions || !views_.ready()) return;
-  const auto rects = layout().panels(views_.panels());
-  const Camera& camera = nav_.camera();
+  if (!debugging() || debug_.positions || !model_.views().ready()) return;
+  const auto rects = model_.layout().panels(model_.views().panels());
+  const Camera& camera = model_.nav().camera();
   int wx = 0, wy = 0;
   glfwGetWindowPos(window_.handle(), &wx, &wy);
   for (const SelectionItem& item : options_.debug_items) {
-    if (!item_exists(session_.doc().scene(), item)) {
+    if (!item_exists(model_.session().doc().scene(), item)) {
       std::cout << "debug-missing " << describe(item) << std::endl;
       continue;
     }
     if (item.kind == SelectionItem::Kind::Point) {
-      const Vec3 p = point_position(session_.doc().scene(), item.point);
+      const Vec3 p = point_position(model_.session().doc().scene(), item.point);
       const auto s = project_to_window(camera, rects[0], p);
       if (!s) return;  // not in view yet: try again next frame
       const double wpp = world_per_pixel(camera, rects[0], p);
@@ -66,9 +66,9 @@ void Editor::report_debug_items() {
       continue;
     }
     std::vector<SelectionItem> items;
-    const DisplaySettings& d = prefs_.display;
-    const auto px = find_pixel_for(pickers_[0], pick_scene(0, items), camera, rects[0], item,
-                                   {d.control_net, d.network_curves});
+    const DisplaySettings& d = model_.prefs().display;
+    const auto px = find_pixel_for(model_.picker(0), model_.pick_scene(0, items), camera, rects[0],
+                                   item, {d.control_net, d.network_curves});
     const char* kind = item.kind == SelectionItem::Kind::Edge    ? "debug-edge"
                        : item.kind == SelectionItem::Kind::Curve ? "debug-curve"
                                                                  : "debug-face";
@@ -83,9 +83,10 @@ void Editor::report_debug_items() {
 }
 
 void Editor::report_selection_change() {
-  if (selection_.serial() == debug_.selection) return;
-  debug_.selection = selection_.serial();
-  std::cout << "selection: " << (selection_.empty() ? "none" : describe(selection_, 64))
+  if (model_.selection().serial() == debug_.selection) return;
+  debug_.selection = model_.selection().serial();
+  std::cout << "selection: "
+            << (model_.selection().empty() ? "none" : describe(model_.selection(), 64))
             << std::endl;
 }
 
@@ -137,26 +138,27 @@ void Editor::report_state() {
     debug_.text_input = io.WantTextInput;
     std::printf("text-input %d\n", int(io.WantTextInput));
   }
-  const std::string message = status_.message();
+  const std::string message = model_.status().message();
   if (message != debug_.message) {
     debug_.message = message;
     if (!message.empty()) std::printf("status %s\n", message.c_str());
   }
   std::fflush(stdout);
 
-  const Document& doc = session_.doc();
-  if (held || frames_ < 3 || !views_.ready() || !views_.settled() || doc.dragging()) return;
+  const Document& doc = model_.session().doc();
+  if (held || frames_ < 3 || !model_.views().ready() || !model_.views().settled() || doc.dragging())
+    return;
   const Scene& scene = doc.scene();
-  const auto rects = layout().panels(views_.panels());
-  const Camera& camera = nav_.camera();
+  const auto rects = model_.layout().panels(model_.views().panels());
+  const Camera& camera = model_.nav().camera();
   const Network none;
   const Network& net = scene.network ? *scene.network : none;
   std::ostringstream out;
   out << "state revision " << doc.revision() << " vertices " << net.vertices.size() << " edges "
       << net.edges.size() << " faces " << net.faces.size() << " curves " << scene.curves.size()
-      << " selected " << selection_.size() << " can-undo " << doc.can_undo() << " can-redo "
-      << doc.can_redo() << " keys " << int(takes_shortcuts()) << " tool " << tools_.active().name()
-      << "\n";
+      << " selected " << model_.selection().size() << " can-undo " << doc.can_undo() << " can-redo "
+      << doc.can_redo() << " keys " << int(takes_shortcuts()) << " tool "
+      << model_.tools().active().name() << "\n";
   int wx = 0, wy = 0;
   glfwGetWindowPos(window_.handle(), &wx, &wy);
   out << "view";
@@ -171,30 +173,30 @@ void Editor::report_state() {
       out << "curve-point " << c << " " << k << " "
           << pixel(project_to_window(camera, rects[0], scene.curves[c].points[k])) << "\n";
   std::vector<SelectionItem> items;
-  const PickScene picks = pick_scene(0, items);
-  const DisplaySettings& d = prefs_.display;
+  const PickScene picks = model_.pick_scene(0, items);
+  const DisplaySettings& d = model_.prefs().display;
   for (std::size_t e = 0; e < net.edges.size(); ++e)
     out << "edge " << e << " "
-        << pixel(find_pixel_for(pickers_[0], picks, camera, rects[0], SelectionItem::edge(int(e)),
-                                {d.control_net, d.network_curves}))
+        << pixel(find_pixel_for(model_.picker(0), picks, camera, rects[0],
+                                SelectionItem::edge(int(e)), {d.control_net, d.network_curves}))
         << "\n";
   for (std::size_t c = 0; c < scene.curves.size(); ++c)
     out << "curve " << c << " "
-        << pixel(find_pixel_for(pickers_[0], picks, camera, rects[0], SelectionItem::curve(int(c)),
-                                {d.control_net, d.network_curves}))
+        << pixel(find_pixel_for(model_.picker(0), picks, camera, rects[0],
+                                SelectionItem::curve(int(c)), {d.control_net, d.network_curves}))
         << "\n";
   // The joints as the view labels them (CurveMarks follows the document every frame).
-  for (const JointReport& j : curve_marks_.joints())
+  for (const JointReport& j : model_.curve_marks().joints())
     out << "joint " << j.curves[0] << " " << j.curves[1] << " "
-        << joint_class(j, curve_marks_.size()) << " gap " << j.gap << " angle "
+        << joint_class(j, model_.curve_marks().size()) << " gap " << j.gap << " angle "
         << j.tangent_angle_deg << " jump " << j.curvature_jump << "\n";
   for (std::size_t f = 0; f < net.faces.size(); ++f)
     out << "face " << f << " "
-        << pixel(find_pixel_for(pickers_[0], picks, camera, rects[0], SelectionItem::face(int(f)),
-                                {d.control_net, d.network_curves}))
+        << pixel(find_pixel_for(model_.picker(0), picks, camera, rects[0],
+                                SelectionItem::face(int(f)), {d.control_net, d.network_curves}))
         << "\n";
-  if (views_.ready()) {
-    const ScenePoints& points = views_.main()->shown().points();
+  if (model_.views().ready()) {
+    const ScenePoints& points = model_.views().main()->shown().points();
     for (std::size_t i = 0; i < points.positions.size(); ++i) {
       const auto& r = points.refs[i];
       if (!r || r->kind != PointRef::Kind::FreePoint || !points.shown(i)) continue;
@@ -205,8 +207,9 @@ void Editor::report_state() {
           << " " << pixel(project_to_window(camera, rects[0], points.positions[i])) << "\n";
     }
   }
-  if (tools_.active_index() == 0)
-    for (const PlaneHandle& h : plane_handles(scene, selection_, camera, rects[0], ui_scale_))
+  if (model_.tools().active_index() == 0)
+    for (const PlaneHandle& h :
+         plane_handles(scene, model_.selection(), camera, rects[0], ui_scale_))
       out << "knob " << h.vertex << " " << pixel(project_to_window(camera, rects[0], h.knob))
           << "\n";
   const std::string state = out.str();

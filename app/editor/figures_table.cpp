@@ -9,10 +9,6 @@
 
 namespace pl {
 
-double figures_table_height(int rows, float s) {
-  return (rows + 2) * ImGui::GetTextLineHeightWithSpacing() + 16 * s;
-}
-
 void draw_figures_table(const ViewRect& strip, const CompareFigures& figures, bool stale) {
   if (strip.height < 1) return;
   ImGui::SetNextWindowPos(ImVec2(float(strip.x), float(strip.y)));

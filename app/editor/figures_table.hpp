@@ -7,9 +7,6 @@
 
 namespace pl {
 
-// How tall the table wants to be for `rows` rows of figures (header and title included).
-double figures_table_height(int rows, float ui_scale);
-
 // Draws the table in `strip` (window pixels). `stale`: the figures are of an earlier state of
 // the document (a drag or a recomputation is under way).
 void draw_figures_table(const ViewRect& strip, const CompareFigures& figures, bool stale);

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "app/editor/file_browser.hpp"
+#include "app/editor/logic/editor_shell.hpp"
 #include "app/editor/logic/preferences.hpp"
 
 namespace pl {
@@ -42,10 +43,7 @@ class FileDialogs {
   // At start: the editor's autosave of unsaved work from `when` (an edit of `document`, or of a
   // new scene when empty) was left by a crash. Recover loads it, Discard deletes it; Later keeps
   // it for the next start.
-  struct RecoveryOffer {
-    std::string document, when;
-    std::function<void()> recover, discard;
-  };
+  using RecoveryOffer = pl::RecoveryOffer;
   void offer_recovery(RecoveryOffer offer);
   // Runs `action` now when there are no unsaved changes, else asks: Save (then the action, also
   // after a Save As), Discard (the action), or Cancel.

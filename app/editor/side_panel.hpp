@@ -11,9 +11,9 @@
 #include "app/editor/logic/curve_marks.hpp"
 #include "app/editor/logic/document_session.hpp"
 #include "app/editor/logic/preferences.hpp"
+#include "app/editor/logic/scene_views.hpp"
 #include "app/editor/logic/selection.hpp"
 #include "app/editor/logic/tool.hpp"
-#include "app/editor/scene_views.hpp"
 
 namespace pl {
 
@@ -53,6 +53,5 @@ bool draw_comparison_section(const SidePanel& p);
 void draw_continuity_section(const SidePanel& p);
 // Brings the Continuity figures up to the document once the views shown have settled: the
 // scene's own filling, or the comparison's two (continuity_panel.cpp).
-void follow_continuity(ContinuityMonitor& monitor, const SceneViews& views, const Document& doc);
 
 }  // namespace pl

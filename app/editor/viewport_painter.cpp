@@ -1,5 +1,7 @@
 #include "app/editor/viewport_painter.hpp"
 
+#include "app/editor/gpu_view_copy.hpp"
+
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -161,8 +163,9 @@ void ViewportPainter::draw_panel_gl(const ViewportFrame& f, int panel, const Col
   const SceneRenderer& renderer = *f.renderer;
   renderer.draw_backdrop(v);
   const Camera& camera = *f.camera;
-  const GpuScene& gpu = f.views->panel(panel).gpu();
-  const GpuScene* difference = f.views->difference_scene(f.doc->revision(), panel);
+  const GpuScene& gpu = gpu_of(f.views->panel(panel).copy());
+  const ViewCopy* difference_copy = f.views->difference_scene(f.doc->revision(), panel);
+  const GpuScene* difference = difference_copy ? &gpu_of(*difference_copy) : nullptr;
   if (difference) {
     DisplaySettings d = display;
     d.base = BaseMode::Curvature;
@@ -235,7 +238,7 @@ void ViewportPainter::paint(const ViewportFrame& f, const ColorRange& range) {
   }
   // One comb scale for side-by-side panels, as one colour range.
   std::vector<const GpuScene*> scenes;
-  for (int i = 0; i < f.views->panels(); ++i) scenes.push_back(&f.views->panel(i).gpu());
+  for (int i = 0; i < f.views->panels(); ++i) scenes.push_back(&gpu_of(f.views->panel(i).copy()));
   const DisplaySettings display = common_comb_length(f.prefs->display, scenes);
   for (int i = 0; i < f.views->panels(); ++i) draw_panel_gl(f, i, range, display);
 

@@ -19,7 +19,7 @@
 #include "app/editor/logic/selection.hpp"
 #include "app/editor/logic/surface_probe.hpp"
 #include "app/editor/logic/work_plane.hpp"
-#include "app/editor/scene_views.hpp"
+#include "app/editor/logic/scene_views.hpp"
 #include "render/scene_renderer.hpp"
 
 struct GLFWwindow;

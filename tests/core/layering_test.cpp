@@ -122,7 +122,7 @@ TEST(Layering, EditorLogicIncludesNoWindowUiOrGl) {
       "app/editor/logic",
       {"GL/", "GLES", "GLFW/", "EGL/", "KHR/", "epoxy/", "imgui", "backends/", "render/gl",
        "render/gpu_scene", "render/scene_renderer", "render/egl_context", "render/offscreen_target",
-       "render/frame", "app/editor/evaluated_view", "app/editor/gl_window"});
+       "render/frame", "app/editor/gpu_view_copy", "app/editor/gl_window"});
   EXPECT_TRUE(bad.empty()) << bad.front();
 }
 

@@ -1,4 +1,4 @@
-#include "app/editor/scene_views.hpp"
+#include "app/editor/logic/scene_views.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -21,7 +21,7 @@ void SceneViews::rebuild(const Document& doc, const Preferences& prefs, bool com
   error_.clear();
   compare_error_.clear();
   fields_.clear();
-  difference_gpu_.clear();
+  difference_copies_.clear();
   range_key_ = {};
   compare_ = false;
   if (worker_.valid()) abandoned_.push_back(std::move(worker_));  // its result is dropped
@@ -85,14 +85,14 @@ bool SceneViews::poll() {
     error_ = job->error.empty() ? "the scene could not be evaluated" : job->error;
     return true;
   }
-  main_ = std::make_unique<EvaluatedView>(std::move(job->views[0]));
+  main_ = std::make_unique<EvaluatedView>(std::move(job->views[0]), copies_);
   compare_error_ = job->pane_error;
   if (job->compare && job->views.size() == job->setup.schemes.size() + 1) {
     for (std::size_t i = 1; i < job->views.size(); ++i)
-      compare_views_.push_back(std::make_unique<EvaluatedView>(std::move(job->views[i])));
+      compare_views_.push_back(std::make_unique<EvaluatedView>(std::move(job->views[i]), copies_));
     setup_ = job->setup;
     fields_.resize(compare_views_.size());
-    difference_gpu_.resize(compare_views_.size());
+    difference_copies_.resize(compare_views_.size());
     compare_ = true;
   }
   return true;
@@ -174,18 +174,16 @@ ColorRange SceneViews::colour_range(const DisplaySettings& d, uint64_t revision)
   return range_;
 }
 
-const GpuScene* SceneViews::difference_scene(uint64_t revision, int panel) {
+const ViewCopy* SceneViews::difference_scene(uint64_t revision, int panel) {
   if (!shows_distance(panel)) return nullptr;
   const EvaluatedView& base = *compare_views_[setup_.base_pane()];
   const EvaluatedView& view = *compare_views_[panel];
   const uint64_t key = revision * 2 + (view.settled() ? 1 : 0);
   if (fields_[panel].follow(base.shown().draw(), view.shown().draw(), key)) {
-    if (!difference_gpu_[panel])
-      difference_gpu_[panel] = std::make_unique<GpuScene>(fields_[panel].scene());
-    else
-      difference_gpu_[panel]->update(fields_[panel].scene());
+    if (!difference_copies_[panel]) difference_copies_[panel] = make_view_copy(copies_);
+    difference_copies_[panel]->update(fields_[panel].scene());
   }
-  return difference_gpu_[panel].get();
+  return difference_copies_[panel].get();
 }
 
 void SceneViews::set_base(FaceScheme base) {

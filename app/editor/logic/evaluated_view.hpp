@@ -2,8 +2,9 @@
 // comparison) kept live at two densities, each with its GPU copy: while a drag is under way the
 // coarse evaluation follows the document and is drawn; on release the fine one catches up
 // (re-filling and re-evaluating only the faces the drag changed) and is drawn again. The borders
-// and curvature combs (LiveCurves) are shared by both densities and uploaded to the GPU copy shown
-// when they change. Needs a current GL context.
+// and curvature combs (LiveCurves) are shared by both densities and given to the drawn copy shown
+// when they change. The drawn copies (view_copy.hpp) are the window's GPU buffers, or nothing
+// when no window draws the view.
 //
 // Big networks: each view has a triangle budget. It starts at the highest density of its chain
 // (fine_density, fine_density / 2, ...) at which all surfaces fit the budget, and
@@ -22,9 +23,9 @@
 #include "app/editor/logic/live_curves.hpp"
 #include "app/editor/logic/live_surfaces.hpp"
 #include "app/editor/logic/net_thinning.hpp"
+#include "app/editor/logic/view_copy.hpp"
 #include "core/eval/density_choice.hpp"
 #include "render/display_settings.hpp"
-#include "render/gpu_scene.hpp"
 
 namespace pl {
 
@@ -62,10 +63,12 @@ ViewEvaluation evaluate_view(const Scene& scene, uint64_t revision, const std::s
 
 class EvaluatedView {
  public:
-  // Uploads an evaluation (needs the GL context).
-  explicit EvaluatedView(ViewEvaluation evaluation);
-  // Evaluates and uploads at once. Throws DataError when the scene cannot be evaluated.
-  EvaluatedView(const Document& doc, const ViewRequest& request);
+  // Takes an evaluation and gives it to its drawn copies, made by `copies` (on the GL thread
+  // when they are GPU copies).
+  EvaluatedView(ViewEvaluation evaluation, const ViewCopyFactory& copies);
+  // Evaluates at once. Throws DataError when the scene cannot be evaluated.
+  EvaluatedView(const Document& doc, const ViewRequest& request,
+                const ViewCopyFactory& copies = {});
 
   // Follows the document; returns true when what is drawn changed. Throws DataError when the
   // edited network cannot be filled (the view keeps its last state).
@@ -97,7 +100,7 @@ class EvaluatedView {
   void configure_combs(bool combs, int teeth) { curves_->configure(combs, teeth); }
 
   const LiveSurfaces& shown() const { return coarse_shown_ ? *coarse_ : *fine_; }
-  const GpuScene& gpu() const { return coarse_shown_ ? gpu_coarse_ : gpu_fine_; }
+  const ViewCopy& copy() const { return coarse_shown_ ? *copy_coarse_ : *copy_fine_; }
   const LiveSurfaces& fine() const { return *fine_; }
   const LiveSurfaces& coarse() const { return *coarse_; }
   const LiveCurves& curves() const { return *curves_; }
@@ -107,15 +110,15 @@ class EvaluatedView {
 
  private:
   // Brings the curves up to `live` (last synced from revision `from`, changing `changed`) and
-  // uploads them to `gpu` if its copy is older. Returns true when something was uploaded.
+  // gives them to `copy` if it is older. Returns true when it did.
   bool follow_curves(const Document& doc, const LiveSurfaces& live, uint64_t from,
-                     const std::vector<int>& changed, GpuScene& gpu, uint64_t& gpu_serial);
+                     const std::vector<int>& changed, ViewCopy& copy, uint64_t& copy_serial);
 
   // The border polylines uploaded: LiveCurves' own, or every k-th point of one (a border a few
   // pixels long on screen needs a few segments, not 64).
   std::vector<const CurvatureComb*> drawn_borders();
-  // Uploads the shown points of `live` to `gpu` unless `key` says it holds them already.
-  void upload_net(const LiveSurfaces& live, GpuScene& gpu, uint64_t& key);
+  // Gives the shown points of `live` to `copy` unless `key` says it holds them already.
+  void upload_net(const LiveSurfaces& live, ViewCopy& copy, uint64_t& key);
 
   std::optional<FaceScheme> scheme_;
   DensityBudget fine_budget_, coarse_budget_;
@@ -125,7 +128,7 @@ class EvaluatedView {
   std::vector<CurvatureComb> thin_borders_;
   std::unique_ptr<LiveSurfaces> coarse_, fine_;
   std::unique_ptr<LiveCurves> curves_;
-  GpuScene gpu_fine_, gpu_coarse_;
+  std::unique_ptr<ViewCopy> copy_fine_, copy_coarse_;
   uint64_t fine_revision_, coarse_revision_;
   uint64_t fine_curves_serial_ = UINT64_MAX, coarse_curves_serial_ = UINT64_MAX;
   bool coarse_shown_ = false;

@@ -1,4 +1,4 @@
-#include "app/editor/evaluated_view.hpp"
+#include "app/editor/logic/evaluated_view.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -121,10 +121,11 @@ ViewEvaluation evaluate_view(const Scene& scene, uint64_t revision, const std::s
   return v;
 }
 
-EvaluatedView::EvaluatedView(const Document& doc, const ViewRequest& request)
-    : EvaluatedView(evaluate_view(doc.scene(), doc.revision(), source_of(doc), request)) {}
+EvaluatedView::EvaluatedView(const Document& doc, const ViewRequest& request,
+                             const ViewCopyFactory& copies)
+    : EvaluatedView(evaluate_view(doc.scene(), doc.revision(), source_of(doc), request), copies) {}
 
-EvaluatedView::EvaluatedView(ViewEvaluation v)
+EvaluatedView::EvaluatedView(ViewEvaluation v, const ViewCopyFactory& copies)
     : scheme_(v.scheme),
       fine_budget_(v.fine_budget),
       coarse_budget_(v.coarse_budget),
@@ -133,24 +134,26 @@ EvaluatedView::EvaluatedView(ViewEvaluation v)
       curves_(std::move(v.curves)),
       fine_revision_(v.revision),
       coarse_revision_(v.revision) {
-  gpu_fine_.update_meshes_and_curves(fine_->draw());
-  gpu_coarse_.update_meshes_and_curves(coarse_->draw());
-  upload_net(*fine_, gpu_fine_, fine_net_key_);
+  copy_fine_ = make_view_copy(copies);
+  copy_coarse_ = make_view_copy(copies);
+  copy_fine_->update_meshes_and_curves(fine_->draw());
+  copy_coarse_->update_meshes_and_curves(coarse_->draw());
+  upload_net(*fine_, *copy_fine_, fine_net_key_);
   // The curves are at the evaluation's revision already: upload them.
   fine_curves_serial_ = curves_->serial();
-  gpu_fine_.update_curves(curves_->network_comb_refs(), drawn_borders(),
-                          curves_->border_on_network(), curves_->free_comb_refs());
+  copy_fine_->update_curves(curves_->network_comb_refs(), drawn_borders(),
+                            curves_->border_on_network(), curves_->free_comb_refs());
 }
 
 bool EvaluatedView::follow_curves(const Document& doc, const LiveSurfaces& live, uint64_t from,
-                                  const std::vector<int>& changed, GpuScene& gpu,
-                                  uint64_t& gpu_serial) {
+                                  const std::vector<int>& changed, ViewCopy& copy,
+                                  uint64_t& copy_serial) {
   curves_->follow(doc.scene(), live.surfaces(), from, live.synced_revision(), changed,
                   &live.evaluation().filling().topology());
-  if (gpu_serial == curves_->serial()) return false;
-  gpu_serial = curves_->serial();
-  gpu.update_curves(curves_->network_comb_refs(), drawn_borders(), curves_->border_on_network(),
-                    curves_->free_comb_refs());
+  if (copy_serial == curves_->serial()) return false;
+  copy_serial = curves_->serial();
+  copy.update_curves(curves_->network_comb_refs(), drawn_borders(), curves_->border_on_network(),
+                     curves_->free_comb_refs());
   return true;
 }
 
@@ -193,29 +196,29 @@ bool EvaluatedView::follow(const Document& doc) {
     const bool was_fine = !coarse_shown_;
     coarse_shown_ = true;
     if (coarse_revision_ == doc.revision())
-      return follow_curves(doc, *coarse_, coarse_->synced_revision(), {}, gpu_coarse_,
+      return follow_curves(doc, *coarse_, coarse_->synced_revision(), {}, *copy_coarse_,
                            coarse_curves_serial_) ||
              was_fine;
     coarse_revision_ = doc.revision();  // first: a failing sync is not retried every frame
     const uint64_t from = coarse_->synced_revision();
     const std::vector<int> changed = sync_live(*coarse_, doc);
     last_eval_ms_ = coarse_->last_sync_ms();
-    gpu_coarse_.update_meshes_and_curves(coarse_->draw());
-    follow_curves(doc, *coarse_, from, changed, gpu_coarse_, coarse_curves_serial_);
+    copy_coarse_->update_meshes_and_curves(coarse_->draw());
+    follow_curves(doc, *coarse_, from, changed, *copy_coarse_, coarse_curves_serial_);
     return true;
   }
   const bool was_coarse = coarse_shown_;
   coarse_shown_ = false;
   if (fine_revision_ == doc.revision())
-    return follow_curves(doc, *fine_, fine_->synced_revision(), {}, gpu_fine_,
+    return follow_curves(doc, *fine_, fine_->synced_revision(), {}, *copy_fine_,
                          fine_curves_serial_) ||
            was_coarse;
   fine_revision_ = doc.revision();
   const uint64_t from = fine_->synced_revision();
   const std::vector<int> changed = sync_live(*fine_, doc);
   last_eval_ms_ = fine_->last_sync_ms();
-  gpu_fine_.update_meshes_and_curves(fine_->draw());
-  follow_curves(doc, *fine_, from, changed, gpu_fine_, fine_curves_serial_);
+  copy_fine_->update_meshes_and_curves(fine_->draw());
+  follow_curves(doc, *fine_, from, changed, *copy_fine_, fine_curves_serial_);
   return true;
 }
 
@@ -261,10 +264,10 @@ bool EvaluatedView::fit_to_screen(
     border_segments_ = std::move(borders);
     fine_curves_serial_ = coarse_curves_serial_ = UINT64_MAX;  // upload them again
     drawn_changed |=
-        follow_curves(doc, *fine_, fine_->synced_revision(), {}, gpu_fine_, fine_curves_serial_);
+        follow_curves(doc, *fine_, fine_->synced_revision(), {}, *copy_fine_, fine_curves_serial_);
   }
-  if (drawn_changed) gpu_fine_.update_meshes_and_curves(fine_->draw());
-  if (coarse_changed) gpu_coarse_.update_meshes_and_curves(coarse_->draw());
+  if (drawn_changed) copy_fine_->update_meshes_and_curves(fine_->draw());
+  if (coarse_changed) copy_coarse_->update_meshes_and_curves(coarse_->draw());
   // The sizes the control net is thinned for: each edge's and each surface's on screen.
   NetScreenSizes sizes;
   sizes.edge_pixels = std::move(edge_pixels);
@@ -299,11 +302,11 @@ void EvaluatedView::show_net(const NetFocus& focus, double point_px, const Docum
     live.set_hidden_points(thinning_.hidden);
     ++net_serial_;
   }
-  upload_net(live, coarse_shown_ ? gpu_coarse_ : gpu_fine_,
+  upload_net(live, coarse_shown_ ? *copy_coarse_ : *copy_fine_,
              coarse_shown_ ? coarse_net_key_ : fine_net_key_);
 }
 
-void EvaluatedView::upload_net(const LiveSurfaces& live, GpuScene& gpu, uint64_t& key) {
+void EvaluatedView::upload_net(const LiveSurfaces& live, ViewCopy& copy, uint64_t& key) {
   // The points move with every sync (revision) and the hidden ones with every thinning.
   const uint64_t k = live.synced_revision() * 0x9E3779B97F4A7C15ull ^ net_serial_ << 1 ^
                      live.points_layout() << 40;
@@ -314,7 +317,7 @@ void EvaluatedView::upload_net(const LiveSurfaces& live, GpuScene& gpu, uint64_t
   arrows_scratch_.clear();
   for (std::size_t a = 0; a < pts.arrows.size(); ++a)
     if (pts.shown(pts.arrow_base[a])) arrows_scratch_.push_back(pts.arrows[a]);
-  gpu.set_net(net_scratch_, arrows_scratch_);
+  copy.set_net(net_scratch_, arrows_scratch_);
 }
 
 std::string EvaluatedView::density_note() const {

@@ -3,10 +3,11 @@
 // (compare_layout.hpp: 2, 3, 4 or 6 panes of any schemes), each an EvaluatedView (two densities
 // with their GPU copies) that follows every edit incrementally; and the GPU copies of the
 // comparison's difference colouring (every pane but the base's, coloured by its distance to the
-// base pane's filling). Needs a current GL
-// context. A scene that cannot be evaluated leaves no view and an error() to show instead.
-// Evaluation runs on a worker thread (a 1,536-face network takes seconds): the window keeps
-// repainting and shows the progress; the upload happens on the GL thread in poll().
+// base pane's filling). The drawn copies are made by the factory given (the window's GPU buffers;
+// none without a window: view_copy.hpp). A scene that cannot be evaluated leaves no view and an
+// error() to show instead. Evaluation runs on a worker thread (a 1,536-face network takes seconds):
+// the window keeps repainting and shows the progress; the drawn copies are made on the caller's
+// thread in poll().
 #pragma once
 
 #include <chrono>
@@ -19,16 +20,16 @@
 #include <vector>
 
 #include "app/document/document.hpp"
-#include "app/editor/evaluated_view.hpp"
 #include "app/editor/logic/compare_layout.hpp"
 #include "app/editor/logic/difference_field.hpp"
+#include "app/editor/logic/evaluated_view.hpp"
 #include "app/editor/logic/preferences.hpp"
 
 namespace pl {
 
 class SceneViews {
  public:
-  SceneViews() = default;
+  explicit SceneViews(ViewCopyFactory copies = {}) : copies_(std::move(copies)) {}
   ~SceneViews();  // waits for a worker still evaluating
   SceneViews(const SceneViews&) = delete;
   SceneViews& operator=(const SceneViews&) = delete;
@@ -39,8 +40,8 @@ class SceneViews {
   // shown in the same frame.
   void rebuild(const Document& doc, const Preferences& prefs, bool compare,
                std::chrono::milliseconds wait = std::chrono::milliseconds(150));
-  // Takes the worker's result when it is there: uploads it (the GL context's thread) and makes
-  // the views ready, or keeps the error. Returns true when it did.
+  // Takes the worker's result when it is there: gives it to the drawn copies and makes the views
+  // ready, or keeps the error. Returns true when it did.
   bool poll();
   bool loading() const { return job_ != nullptr; }
   // How far the worker is (0 to 1) and what it does, while loading().
@@ -94,9 +95,9 @@ class SceneViews {
   bool shows_distance(int panel) const {
     return showing_difference() && panel >= 0 && panel < panels() && panel != setup_.base_pane();
   }
-  // The GPU copy of pane `panel`'s difference colouring for this revision (recomputed when the
+  // The drawn copy of pane `panel`'s difference colouring for this revision (recomputed when the
   // document or the densities shown changed); null when that pane shows no distances.
-  const GpuScene* difference_scene(uint64_t revision, int panel);
+  const ViewCopy* difference_scene(uint64_t revision, int panel);
   // One symmetric range for every pane's distances (the largest |distance| of any), and that
   // largest distance: from the fields last computed.
   double difference_range() const;
@@ -136,7 +137,8 @@ class SceneViews {
     bool operator==(const RangeKey&) const = default;
   } range_key_;
   ColorRange range_{-1, 1};
-  std::vector<std::unique_ptr<GpuScene>> difference_gpu_;  // one per pane
+  ViewCopyFactory copies_;
+  std::vector<std::unique_ptr<ViewCopy>> difference_copies_;  // one per pane
 };
 
 }  // namespace pl

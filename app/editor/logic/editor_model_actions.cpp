@@ -1,12 +1,13 @@
 // The editor's action table: every command with its menu place, keys and help, bound to the
-// parts that carry it out. The menu bar, the context menu, the keys and F1 are drawn from it;
-// an authoring command is one more entry here (or in a GUI-free add_*_actions function).
+// parts that carry it out, a group per menu. The menu bar, the context menu, the keys and F1 are
+// drawn from it; an authoring command is one more entry here (or in a GUI-free add_*_actions
+// function). What needs a window (a dialog, the help) is asked of the shell.
 #include <algorithm>
 
-#include "app/editor/editor.hpp"
 #include "app/editor/logic/add_vertex_tool.hpp"
 #include "app/editor/logic/authoring_actions.hpp"
 #include "app/editor/logic/curve_actions.hpp"
+#include "app/editor/logic/editor_model.hpp"
 #include "app/editor/logic/interior_actions.hpp"
 #include "app/editor/logic/make_face_tool.hpp"
 #include "app/editor/logic/patch_actions.hpp"
@@ -24,44 +25,46 @@ constexpr ContextSet kOnObjects =
 
 }  // namespace
 
-void Editor::register_actions() {
-  ActionRegistry& r = actions_;
-  auto has_selection = [this] { return !selection_.empty(); };
-  auto aspect = [this] { return layout().panels(views_.panels())[0].aspect(); };
+void EditorModel::register_actions() {
+  add_file_actions();
+  add_edit_actions();
+  add_object_actions();
+  add_view_actions();
+  add_work_plane_actions();
+  add_tool_actions();
+}
 
-  // File
+void EditorModel::add_file_actions() {
+  ActionRegistry& r = actions_;
   r.add(make_action("file.new", "File", "New", {"Ctrl+N"}, "new empty scene", [this] {
-    dialogs_.confirm_discard("start a new scene", [this] { new_scene(); });
+    shell_.confirm_discard("start a new scene", [this] { new_scene(); });
   }));
-  r.add(make_action("file.open", "File", "Open...", {"Ctrl+O"},
-                    "open a scene (.json) or GB patch (.gbp)", [this] {
-                      dialogs_.confirm_discard("open another file", [this] {
-                        dialogs_.browse(FileDialogs::Purpose::Open, browse_start_dir());
-                      });
-                    }));
+  r.add(make_action(
+      "file.open", "File", "Open...", {"Ctrl+O"}, "open a scene (.json) or GB patch (.gbp)",
+      [this] { shell_.confirm_discard("open another file", [this] { shell_.ask_open(); }); }));
   r.add(make_action("file.save", "File", "Save", {"Ctrl+S"}, "save (asks for a name when untitled)",
                     [this] { save(); }));
   r.add(make_action("file.save_as", "File", "Save As...", {"Ctrl+Shift+S"}, "save under a new name",
-                    [this] { browse_save_as(); }));
+                    [this] { shell_.ask_save_as(); }));
   Action exporting = make_action(
       "file.export", "File", "Export...", {},
       "the fine surfaces as a mesh (OBJ, PLY, OFF, STL), or the patches as CAD surfaces "
       "(STEP .step/.stp, IGES .igs/.iges)",
-      [this] {
-        dialogs_.browse(FileDialogs::Purpose::Export, browse_start_dir(),
-                        session_.doc().path().stem().string() + ".obj");
-      });
+      [this] { shell_.ask_export(); });
   exporting.separator_before = true;
   exporting.enabled = [this] { return views_.ready(); };
   r.add(std::move(exporting));
   r.add(make_action("file.screenshot", "File", "Screenshot...", {}, "render the view to a PNG",
-                    [this] { dialogs_.show_screenshot_options(); }));
-  Action quit = make_action("file.quit", "File", "Quit", {"Ctrl+Q"}, "quit",
-                            [this] { dialogs_.confirm_discard("quit", [this] { quit_ = true; }); });
+                    [this] { shell_.ask_screenshot(); }));
+  Action quit = make_action("file.quit", "File", "Quit", {"Ctrl+Q"}, "quit", [this] {
+    shell_.confirm_discard("quit", [this] { quit_requested = true; });
+  });
   quit.separator_before = true;
   r.add(std::move(quit));
+}
 
-  // Edit
+void EditorModel::add_edit_actions() {
+  ActionRegistry& r = actions_;
   Action undo = make_action("edit.undo", "Edit", "Undo", {"Ctrl+Z"}, "undo", [this] {
     ToolContext ctx = tool_context();
     const bool held = mouse_.tool_has_it;
@@ -106,8 +109,12 @@ void Editor::register_actions() {
   nudge.keys_text = "Arrows, PgUp/PgDn";
   nudge.enabled = [this] { return !selection_.points().empty(); };
   r.add(std::move(nudge));
+}
 
-  // Select, Face and Network (GUI-free, shared with the tests)
+// Select, Face, Network and Curve: the GUI-free groups shared with the tests, and what acts where
+// the context menu was opened.
+void EditorModel::add_object_actions() {
+  ActionRegistry& r = actions_;
   const Say say = [this](const std::string& m) { status_.say(m); };
   add_selection_actions(r, session_.doc(), selection_, say);
   AuthoringHooks hooks;
@@ -145,9 +152,9 @@ void Editor::register_actions() {
   add_curve_actions(r, session_.doc(), selection_, curve_hooks);
   Action graph = make_action("curve.curvature_graph", "Curve", "Curvature Graph", {},
                              "curvature against t of the selected curve, in a window",
-                             [this] { show_curvature_graph_ = !show_curvature_graph_; });
+                             [this] { show_curvature_graph = !show_curvature_graph; });
   graph.separator_before = true;
-  graph.checked = [this] { return show_curvature_graph_; };
+  graph.checked = [this] { return show_curvature_graph; };
   graph.context = context_bit(ContextTarget::Point) | context_bit(ContextTarget::Curve) |
                   context_bit(ContextTarget::Empty);
   graph.enabled = [this] { return selected_curve(session_.doc().scene(), selection_).has_value(); };
@@ -160,8 +167,11 @@ void Editor::register_actions() {
            (selection_.has(SelectionItem::Kind::Face) || selection_.has(SelectionItem::Kind::Edge));
   };
   r.add(std::move(rename));
+}
 
-  // View
+void EditorModel::add_view_actions() {
+  ActionRegistry& r = actions_;
+  auto aspect = [this] { return layout().panels(views_.panels())[0].aspect(); };
   Action all = make_action("view.frame_all", "View", "Frame All", {"F"}, "frame all",
                            [this, aspect] { nav_.frame(scene_box(), aspect()); });
   all.context = context_bit(ContextTarget::Empty);
@@ -172,7 +182,7 @@ void Editor::register_actions() {
                     const Box b = selection_bounds(session_.doc().scene(), selection_);
                     b.empty() ? nav_.frame(scene_box(), aspect()) : nav_.frame_closely(b, aspect());
                   });
-  sel.enabled = has_selection;
+  sel.enabled = [this] { return !selection_.empty(); };
   sel.context = kOnObjects;
   r.add(std::move(sel));
   const std::pair<const char*, ViewPreset> presets[] = {{"Front", ViewPreset::Front},
@@ -213,8 +223,10 @@ void Editor::register_actions() {
                              [this] { prefs_.show_probe = !prefs_.show_probe; });
   probe.checked = [this] { return prefs_.show_probe; };
   r.add(std::move(probe));
+}
 
-  // Work plane
+void EditorModel::add_work_plane_actions() {
+  ActionRegistry& r = actions_;
   Action grid =
       make_action("plane.grid", "View/Work Plane", "Show Grid", {"G"}, "work-plane grid on/off",
                   [this] { work_plane_.shown = !work_plane_.shown; });
@@ -249,12 +261,15 @@ void Editor::register_actions() {
                                 if (!b.empty()) work_plane_.origin = b.centre();
                                 work_plane_.shown = true;
                               });
-  at_sel.enabled = has_selection;
+  at_sel.enabled = [this] { return !selection_.empty(); };
   r.add(std::move(at_sel));
   r.add(make_action("plane.at_origin", "View/Work Plane", "Through the Origin", {}, "",
                     [this] { work_plane_.origin = Vec3(0); }));
+}
 
-  // Tools: one entry per tool of the tool box, checked while active.
+// One entry per tool of the tool box, checked while active; Finish; the help.
+void EditorModel::add_tool_actions() {
+  ActionRegistry& r = actions_;
   for (std::size_t i = 0; i < tools_.size(); ++i) {
     const Tool& tool = tools_.tool(i);
     std::string id = "tool." + tool.name();
@@ -284,8 +299,8 @@ void Editor::register_actions() {
 
   // Help
   Action help = make_action("help.keys", "Help", "Mouse and Keys", {"F1"}, "this list",
-                            [this] { show_help_ = !show_help_; });
-  help.checked = [this] { return show_help_; };
+                            [this] { show_help = !show_help; });
+  help.checked = [this] { return show_help; };
   r.add(std::move(help));
 }
 
