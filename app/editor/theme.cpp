@@ -42,8 +42,8 @@ void apply_theme() {
   s.WindowBorderSize = 0;
   s.FrameBorderSize = 0;
   s.WindowPadding = ImVec2(10, 8);
-  s.FramePadding = ImVec2(6, 4);
-  s.ItemSpacing = ImVec2(8, 6);
+  s.FramePadding = ImVec2(kUiFramePadding[0], kUiFramePadding[1]);
+  s.ItemSpacing = ImVec2(kUiItemSpacing[0], kUiItemSpacing[1]);
   s.IndentSpacing = 14;
   s.ScrollbarSize = 12;
   ImVec4* c = s.Colors;

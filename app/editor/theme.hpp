@@ -21,6 +21,10 @@ inline constexpr ThemeColour kThemePopup{0.17f, 0.175f, 0.19f};
 
 // The UI font's size in pixels at UI scale 1.
 inline constexpr float kUiFontPixels = 15.0f;
+// The space around a frame's text and between items, at UI scale 1: with the font they make the
+// window's metrics (a menu bar is kUiFontPixels + 2 kUiFramePadding[1] high).
+inline constexpr float kUiFramePadding[2] = {6.0f, 4.0f};
+inline constexpr float kUiItemSpacing[2] = {8.0f, 6.0f};
 
 // Colours and spacing (unscaled).
 void apply_theme();

@@ -15,8 +15,9 @@ The checks: `patchlab analyze` of the saved file reports every shared edge below
 no projected vertex, and the network has a triangle, a quad and two pentagons (10 + 1 vertices,
 13 + 1 edges); the status bar said what the split did. Then undo back to the empty scene
 (Ctrl+Z until nothing is left to undo), redo to the end (Ctrl+Y), save again (Ctrl+S): the
-file is reproduced byte for byte. Every step waits for the state the editor reports
-(--debug-state), never for a fixed time.
+file is reproduced byte for byte, and it is the file the editor model's unit test saves from the
+same steps (tests/data/editor/authoring_scenario.json). Every step waits for the state the editor
+reports (--debug-state), never for a fixed time.
 
 Usage: editor_authoring_e2e.py PATCHLAB WORKDIR (WORKDIR holds cwd/, config/, state/).
 """
@@ -150,6 +151,12 @@ with ed:
     ed.wait_line(r"^saved " + re.escape(saved_path), "the save")
     ed.let_go("Return")
     first = open(saved_path, "rb").read()
+    # The editor model's unit test (tests/editor_model) runs the same steps without a window and
+    # must save this file too.
+    reference = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "data", "editor",
+                             "authoring_scenario.json")
+    check(first == open(reference, "rb").read(),
+          f"the saved file differs from {os.path.normpath(reference)}")
     ed.move((5, 5))
     shot("saved")
 
