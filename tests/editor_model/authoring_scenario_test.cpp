@@ -32,7 +32,7 @@ struct Counts {
   std::size_t vertices = 0, edges = 0, faces = 0;
 };
 
-Counts counts(const EditorModel& m) {
+Counts counts(EditorModel& m) {
   const auto& net = m.doc().scene().network;
   if (!net) return {};
   return {net->vertices.size(), net->edges.size(), net->faces.size()};

@@ -9,15 +9,12 @@
 
 namespace pl {
 
-class AddEdgeTool final : public Tool {
+class AddEdgeTool final : public ClickTool {
  public:
-  std::string name() const override { return "Add Edge"; }
+  AddEdgeTool() : ClickTool("Add Edge", "E") {}
   std::string hint() const override;
-  std::string shortcut() const override { return "E"; }
-  bool press(ToolContext&, const PointerEvent&) override { return false; }
   void click(ToolContext& ctx, const PointerEvent& e) override;
   void hover(ToolContext& ctx, const PointerEvent& e) override;
-  void leave() override { cursor_.reset(); }
   void cancel(ToolContext&) override { from_ = -1; }
   bool capturing() const override { return from_ >= 0; }
   ToolPreview preview(const ToolContext& ctx) const override;
@@ -26,7 +23,6 @@ class AddEdgeTool final : public Tool {
 
  private:
   int from_ = -1;
-  std::optional<Vec3> cursor_;
 };
 
 }  // namespace pl

@@ -36,7 +36,7 @@ void AddVertexTool::click(ToolContext& ctx, const PointerEvent& e) {
 
 ToolPreview AddVertexTool::preview(const ToolContext&) const {
   ToolPreview p;
-  p.target = target_;
+  p.target = cursor_;
   return p;
 }
 

@@ -9,24 +9,18 @@
 
 namespace pl {
 
-class AddVertexTool final : public Tool {
+class AddVertexTool final : public ClickTool {
  public:
-  std::string name() const override { return "Add Vertex"; }
+  AddVertexTool() : ClickTool("Add Vertex", "V") {}
   std::string hint() const override;
-  std::string shortcut() const override { return "V"; }
-  bool press(ToolContext&, const PointerEvent&) override { return false; }
   void click(ToolContext& ctx, const PointerEvent& e) override;
-  void hover(ToolContext& ctx, const PointerEvent& e) override { target_ = placement(ctx, e); }
-  void leave() override { target_.reset(); }
+  void hover(ToolContext& ctx, const PointerEvent& e) override { cursor_ = placement(ctx, e); }
   ToolPreview preview(const ToolContext& ctx) const override;
   bool places_on_work_plane() const override { return true; }
 
   // Adds a vertex at p and selects it (`add_to_selection`: keeps what was selected). Returns the
   // new vertex, or -1 when refused (a non-finite position).
   int add_at(ToolContext& ctx, const Vec3& p, bool add_to_selection = false);
-
- private:
-  std::optional<Vec3> target_;
 };
 
 }  // namespace pl

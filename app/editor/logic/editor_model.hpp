@@ -134,26 +134,17 @@ class EditorModel {
 
   // --- What the shell reads (and the side panel edits).
   DocumentSession& session() { return session_; }
-  const DocumentSession& session() const { return session_; }
   Document& doc() { return session_.doc(); }
-  const Document& doc() const { return session_.doc(); }
   Preferences& prefs() { return prefs_; }
-  const Preferences& prefs() const { return prefs_; }
   SceneViews& views() { return views_; }
-  const SceneViews& views() const { return views_; }
   ViewNavigator& nav() { return nav_; }
-  const ViewNavigator& nav() const { return nav_; }
   Selection& selection() { return selection_; }
-  const Selection& selection() const { return selection_; }
   ToolBox& tools() { return tools_; }
   WorkPlane& work_plane() { return work_plane_; }
-  const WorkPlane& work_plane() const { return work_plane_; }
   const ContinuityMonitor& continuity() const { return continuity_; }
   const CurveMarks& curve_marks() const { return curve_marks_; }
   ActionRegistry& actions() { return actions_; }
-  const ActionRegistry& actions() const { return actions_; }
   StatusLine& status() { return status_; }
-  const StatusLine& status() const { return status_; }
   CompareFigures& figures() { return figures_; }
   const CadExportJob& cad_job() const { return cad_job_; }
   const Mouse& mouse() const { return mouse_; }

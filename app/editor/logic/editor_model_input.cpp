@@ -25,29 +25,13 @@ void EditorModel::nudge_selection(const KeyChord& k) {
   const Camera& c = nav_.camera();
   const double step =
       0.01 * std::max(c.scene_radius, 1e-9) * (k.shift ? 10.0 : 1.0) * (k.alt ? 0.1 : 1.0);
-  Vec3 d(0);
-  switch (k.key) {
-    case Key::Left:
-      d = -step * c.right();
-      break;
-    case Key::Right:
-      d = step * c.right();
-      break;
-    case Key::Up:
-      d = step * c.up();
-      break;
-    case Key::Down:
-      d = -step * c.up();
-      break;
-    case Key::PageUp:
-      d = -step * c.forward();
-      break;
-    case Key::PageDown:
-      d = step * c.forward();
-      break;
-    default:
-      return;
-  }
+  const std::pair<Key, Vec3> directions[] = {
+      {Key::Left, -c.right()}, {Key::Right, c.right()},     {Key::Up, c.up()},
+      {Key::Down, -c.up()},    {Key::PageUp, -c.forward()}, {Key::PageDown, c.forward()}};
+  const auto it = std::find_if(std::begin(directions), std::end(directions),
+                               [&](const auto& kd) { return kd.first == k.key; });
+  if (it == std::end(directions)) return;
+  const Vec3 d = step * it->second;
   const Scene& scene = session_.doc().scene();
   std::vector<Vec3> positions;
   for (const PointRef& r : points) positions.push_back(point_position(scene, r) + d);

@@ -9,15 +9,12 @@
 
 namespace pl {
 
-class MakeFaceTool final : public Tool {
+class MakeFaceTool final : public ClickTool {
  public:
-  std::string name() const override { return "Make Face"; }
+  MakeFaceTool() : ClickTool("Make Face", "M") {}
   std::string hint() const override;
-  std::string shortcut() const override { return "M"; }
-  bool press(ToolContext&, const PointerEvent&) override { return false; }
   void click(ToolContext& ctx, const PointerEvent& e) override;
   void hover(ToolContext& ctx, const PointerEvent& e) override;
-  void leave() override { cursor_.reset(); }
   void cancel(ToolContext&) override;
   bool capturing() const override { return !vertices_.empty() || !edges_.empty(); }
   bool can_finish(const ToolContext& ctx) const override;
@@ -30,7 +27,6 @@ class MakeFaceTool final : public Tool {
  private:
   bool valid(const Scene& scene) const;
   std::vector<int> vertices_, edges_;  // one of them is empty
-  std::optional<Vec3> cursor_;
 };
 
 // The direction towards the viewer, which a new face's normal follows (MakeFaceCommand's

@@ -10,15 +10,12 @@
 
 namespace pl {
 
-class NewCurveTool final : public Tool {
+class NewCurveTool final : public ClickTool {
  public:
-  std::string name() const override { return "New Curve"; }
+  NewCurveTool() : ClickTool("New Curve", "B") {}
   std::string hint() const override;
-  std::string shortcut() const override { return "B"; }
-  bool press(ToolContext&, const PointerEvent&) override { return false; }
   void click(ToolContext& ctx, const PointerEvent& e) override;
   void hover(ToolContext& ctx, const PointerEvent& e) override { cursor_ = placement(ctx, e); }
-  void leave() override { cursor_.reset(); }
   void cancel(ToolContext&) override { points_.clear(); }
   bool capturing() const override { return !points_.empty(); }
   bool can_finish(const ToolContext& ctx) const override;
@@ -36,7 +33,6 @@ class NewCurveTool final : public Tool {
   bool enough_points() const;
   CurveType type_ = CurveType::BSpline;
   std::vector<Vec3> points_;
-  std::optional<Vec3> cursor_;
 };
 
 }  // namespace pl

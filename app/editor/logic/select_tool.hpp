@@ -16,9 +16,8 @@ namespace pl {
 
 class SelectTool final : public Tool {
  public:
-  std::string name() const override { return "Select"; }
+  SelectTool() : Tool("Select", "Q") {}
   std::string hint() const override;
-  std::string shortcut() const override { return "Q"; }
   bool press(ToolContext& ctx, const PointerEvent& e) override;
   void drag(ToolContext& ctx, const PointerEvent& e) override;
   void release(ToolContext& ctx, const PointerEvent& e) override;

@@ -44,13 +44,13 @@ void SplitEdgeTool::click(ToolContext& ctx, const PointerEvent& e) {
 
 void SplitEdgeTool::hover(ToolContext& ctx, const PointerEvent& e) {
   const auto at = curve_under(ctx.doc.scene(), e);
-  target_.reset();
-  if (at) target_ = ctx.doc.scene().network->edge_curve(at->first).evaluate(at->second).p;
+  cursor_.reset();
+  if (at) cursor_ = ctx.doc.scene().network->edge_curve(at->first).evaluate(at->second).p;
 }
 
 ToolPreview SplitEdgeTool::preview(const ToolContext&) const {
   ToolPreview p;
-  p.target = target_;
+  p.target = cursor_;
   return p;
 }
 

@@ -8,23 +8,17 @@
 
 namespace pl {
 
-class SplitEdgeTool final : public Tool {
+class SplitEdgeTool final : public ClickTool {
  public:
+  SplitEdgeTool() : ClickTool("Split Edge", "K") {}
   // Clicks closer to an end than this (in curve parameter) are refused: the new vertex would
   // all but sit on the old one.
   static constexpr double kEndMargin = 0.02;
 
-  std::string name() const override { return "Split Edge"; }
   std::string hint() const override;
-  std::string shortcut() const override { return "K"; }
-  bool press(ToolContext&, const PointerEvent&) override { return false; }
   void click(ToolContext& ctx, const PointerEvent& e) override;
   void hover(ToolContext& ctx, const PointerEvent& e) override;
-  void leave() override { target_.reset(); }
   ToolPreview preview(const ToolContext&) const override;
-
- private:
-  std::optional<Vec3> target_;
 };
 
 // Splits edge e at t for a tool or an action: runs the command, selects the new vertex and

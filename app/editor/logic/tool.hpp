@@ -67,12 +67,14 @@ struct PointerEvent {
 
 class Tool {
  public:
+  // `shortcut`: the key that activates it ("V"; empty: none), bound through the action table.
+  Tool(std::string name, std::string shortcut)
+      : name_(std::move(name)), shortcut_(std::move(shortcut)) {}
   virtual ~Tool() = default;
-  virtual std::string name() const = 0;
+  const std::string& name() const { return name_; }
+  const std::string& shortcut() const { return shortcut_; }
   // What the tool does, for the status bar while it is active.
   virtual std::string hint() const = 0;
-  // The key that activates it ("V"; empty: none), bound through the action table.
-  virtual std::string shortcut() const { return {}; }
 
   // A left press in a view. Returns true when the tool takes the mouse: it then gets drag() at
   // every cursor position and release() at the end. Returns false to let the press orbit the
@@ -95,6 +97,22 @@ class Tool {
   virtual ToolPreview preview(const ToolContext&) const { return {}; }
   // Clicks put points on the work plane: the editor shows its grid while the tool is chosen.
   virtual bool places_on_work_plane() const { return false; }
+
+ private:
+  std::string name_, shortcut_;
+};
+
+// A tool that acts on clicks only (a press orbits; press and release without motion is a click)
+// and shows where a click would act: the point under the cursor that hover() finds, none once
+// the cursor left the views.
+class ClickTool : public Tool {
+ public:
+  using Tool::Tool;
+  bool press(ToolContext&, const PointerEvent&) override { return false; }
+  void leave() override { cursor_.reset(); }
+
+ protected:
+  std::optional<Vec3> cursor_;
 };
 
 // Where a click at `e` puts a new point: on the surface under the cursor, else where the
