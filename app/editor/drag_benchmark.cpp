@@ -12,7 +12,6 @@
 // and to the first frame showing the scene, and the peak RSS is the process's high-water mark
 // after all of it: loading and the first evaluation included. Display settings are the
 // defaults (the user's preferences are not read).
-#include <GLFW/glfw3.h>
 #include <sys/resource.h>
 #include <time.h>
 
@@ -57,7 +56,7 @@ int Editor::run_drag_benchmark() {
   // The scene is evaluated behind the progress bar, as when a user opens it: frames at the
   // interactive loop's loading pace until it is shown.
   while (!model_.views().ready() && (model_.views().loading() || frames_ < 1)) {
-    glfwWaitEventsTimeout(0.05);
+    window_.wait_events(0.05);
     frame();
   }
   if (!model_.views().ready()) {
@@ -65,7 +64,7 @@ int Editor::run_drag_benchmark() {
     return 1;
   }
   for (int i = 0; i < kWarmupFrames; ++i) {
-    glfwPollEvents();
+    window_.poll_events();
     frame();
   }
   glFinish();
@@ -82,7 +81,7 @@ int Editor::run_drag_benchmark() {
     const double a = 2 * 3.141592653589793 * k / 90.0;
     model_.session().doc().drag_to(
         {start + amplitude * Vec3(std::sin(a), 0.5 * std::sin(2 * a), 0.6 * std::cos(a) - 0.6)});
-    glfwPollEvents();
+    window_.poll_events();
     frame();
     glFinish();
     eval_ms += model_.status().eval_ms;
@@ -94,7 +93,7 @@ int Editor::run_drag_benchmark() {
   const auto release = Clock::now();
   int settle_frames = 0;
   do {
-    glfwPollEvents();
+    window_.poll_events();
     frame();
     glFinish();
     ++settle_frames;

@@ -1,14 +1,11 @@
 #include "app/editor/editor.hpp"
 
+#include <imgui.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 #include <utility>
-
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
-#include <backends/imgui_impl_glfw.h>
-#include <imgui.h>
 
 #include "app/editor/action_menus.hpp"
 #include "app/editor/curvature_graph_window.hpp"
@@ -72,17 +69,8 @@ Editor::Editor(GlWindow& window, EditorOptions options, DocumentSession session)
       dialogs_(file_dialog_handlers()) {
   ui_scale_ = window_.follow_ui_scale(model_.prefs().ui_scale);
   model_.offer_recovery();
-  glfwSetWindowUserPointer(window_.handle(), this);
-  glfwSetDropCallback(window_.handle(), [](GLFWwindow* w, int count, const char** paths) {
-    auto* self = static_cast<Editor*>(glfwGetWindowUserPointer(w));
-    for (int i = 0; i < count; ++i) self->dropped_.emplace_back(paths[i]);
-  });
-  glfwSetKeyCallback(
-      window_.handle(), [](GLFWwindow* w, int key, int scancode, int action, int mods) {
-        ImGui_ImplGlfw_KeyCallback(w, key, scancode, action, mods);  // ImGui's state stays current
-        auto* self = static_cast<Editor*>(glfwGetWindowUserPointer(w));
-        if (action != GLFW_RELEASE) self->key_presses_.emplace_back(key, mods);
-      });
+  window_.on_drop([this](const std::string& path) { dropped_.push_back(path); });
+  window_.on_key([this](int key, int mods) { key_presses_.emplace_back(key, mods); });
 }
 
 Editor::~Editor() {
@@ -110,20 +98,18 @@ void Editor::update_title() {
 
 int Editor::run() {
   while (!model_.quit_requested) {
-    if (glfwWindowShouldClose(window_.handle())) {
-      glfwSetWindowShouldClose(window_.handle(), GLFW_FALSE);
+    if (window_.take_close_request())
       dialogs_.confirm_discard("quit", [this] { model_.quit_requested = true; });
-    }
     // Sleep until input unless something is animating (a drag settling, the first frames, which
     // ImGui needs to lay its windows out, or a gesture).
     const bool busy = frames_ < 4 || model_.animating();
     if (model_.views().loading())
-      glfwWaitEventsTimeout(
+      window_.wait_events(
           kLoadingFrameSeconds);  // repaint the progress, leave the worker the cores
     else if (busy)
-      glfwPollEvents();
+      window_.poll_events();
     else
-      glfwWaitEventsTimeout(kIdleWaitSeconds);
+      window_.wait_events(kIdleWaitSeconds);
     frame();
   }
   return 0;
@@ -224,7 +210,7 @@ void Editor::frame() {
   SceneViews& views = model_.views();
   const EditorLayout l = model_.layout();
   ViewportFrame f;
-  f.window = window_.handle();
+  f.window = &window_;
   f.renderer = &renderer_;
   f.views = &views;
   f.doc = &model_.doc();

@@ -29,8 +29,6 @@
 //                                                 "centre" or "S,J,K"; shown points only)
 //   knob V X Y                                   (the normal knob of a selected vertex)
 //   state-end R
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
 #include <imgui.h>
 
 #include <cstdio>
@@ -46,8 +44,7 @@ void Editor::report_debug_items() {
   if (!debugging() || debug_.positions || !model_.views().ready()) return;
   const auto rects = model_.layout().panels(model_.views().panels());
   const Camera& camera = model_.nav().camera();
-  int wx = 0, wy = 0;
-  glfwGetWindowPos(window_.handle(), &wx, &wy);
+  const auto [wx, wy] = window_.position();
   for (const SelectionItem& item : options_.debug_items) {
     if (!item_exists(model_.session().doc().scene(), item)) {
       std::cout << "debug-missing " << describe(item) << std::endl;
@@ -91,16 +88,14 @@ void Editor::report_selection_change() {
 }
 
 void Editor::report_menu_item(const std::string& label, float x0, float y0, float x1, float y1) {
-  int wx = 0, wy = 0;
-  glfwGetWindowPos(window_.handle(), &wx, &wy);
+  const auto [wx, wy] = window_.position();
   std::printf("menu-item %s %.1f %.1f window %d %d\n", label.c_str(), 0.5 * (x0 + x1),
               0.5 * (y0 + y1), wx, wy);
   std::fflush(stdout);
 }
 
 void Editor::report_panel_item(const std::string& label, float x0, float y0, float x1, float y1) {
-  int wx = 0, wy = 0;
-  glfwGetWindowPos(window_.handle(), &wx, &wy);
+  const auto [wx, wy] = window_.position();
   char line[256];
   std::snprintf(line, sizeof line, "panel-item %s %.1f %.1f window %d %d", label.c_str(),
                 0.5 * (x0 + x1), 0.5 * (y0 + y1), wx, wy);
@@ -159,8 +154,7 @@ void Editor::report_state() {
       << " selected " << model_.selection().size() << " can-undo " << doc.can_undo() << " can-redo "
       << doc.can_redo() << " keys " << int(takes_shortcuts()) << " tool "
       << model_.tools().active().name() << "\n";
-  int wx = 0, wy = 0;
-  glfwGetWindowPos(window_.handle(), &wx, &wy);
+  const auto [wx, wy] = window_.position();
   out << "view";
   for (const Vec3& p : {Vec3(0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)})
     out << " " << pixel(project_to_window(camera, rects[0], p));

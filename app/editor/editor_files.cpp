@@ -1,8 +1,6 @@
 // The window's side of files: the dialogs the model asks for (the shell's answers go back to
 // the model's open_file, save_as, export_file), screenshots, and the busy indicator of a CAD
 // export running on its worker.
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
 
 #include "app/editor/editor.hpp"
 #include "app/editor/editor_windows.hpp"
@@ -63,7 +61,7 @@ void Editor::offer_recovery(RecoveryOffer offer) {
 }
 
 void Editor::wake() {
-  glfwPostEmptyEvent();
+  GlWindow::wake();
 }
 
 void Editor::take_screenshot(const fs::path& path) {

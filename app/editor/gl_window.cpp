@@ -109,4 +109,60 @@ void GlWindow::end_frame() {
   glfwSwapBuffers(window_);
 }
 
+void GlWindow::poll_events() {
+  glfwPollEvents();
+}
+
+void GlWindow::wait_events(double seconds) {
+  glfwWaitEventsTimeout(seconds);
+}
+
+void GlWindow::wake() {
+  glfwPostEmptyEvent();
+}
+
+void GlWindow::on_key(std::function<void(int, int)> handler) {
+  key_handler_ = std::move(handler);
+  glfwSetWindowUserPointer(window_, this);
+  glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int scancode, int action, int mods) {
+    ImGui_ImplGlfw_KeyCallback(w, key, scancode, action, mods);  // ImGui's state stays current
+    auto* self = static_cast<GlWindow*>(glfwGetWindowUserPointer(w));
+    if (action != GLFW_RELEASE && self->key_handler_) self->key_handler_(key, mods);
+  });
+}
+
+void GlWindow::on_drop(std::function<void(const std::string&)> handler) {
+  drop_handler_ = std::move(handler);
+  glfwSetWindowUserPointer(window_, this);
+  glfwSetDropCallback(window_, [](GLFWwindow* w, int count, const char** paths) {
+    auto* self = static_cast<GlWindow*>(glfwGetWindowUserPointer(w));
+    if (!self->drop_handler_) return;
+    for (int i = 0; i < count; ++i) self->drop_handler_(paths[i]);
+  });
+}
+
+bool GlWindow::take_close_request() {
+  if (!glfwWindowShouldClose(window_)) return false;
+  glfwSetWindowShouldClose(window_, GLFW_FALSE);
+  return true;
+}
+
+std::pair<int, int> GlWindow::framebuffer_size() const {
+  int w = 0, h = 0;
+  glfwGetFramebufferSize(window_, &w, &h);
+  return {w, h};
+}
+
+std::pair<int, int> GlWindow::window_size() const {
+  int w = 0, h = 0;
+  glfwGetWindowSize(window_, &w, &h);
+  return {w, h};
+}
+
+std::pair<int, int> GlWindow::position() const {
+  int x = 0, y = 0;
+  glfwGetWindowPos(window_, &x, &y);
+  return {x, y};
+}
+
 }  // namespace pl

@@ -3,8 +3,10 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 struct GLFWwindow;
 
@@ -32,11 +34,30 @@ class GlWindow {
   // scale applied; returns the scale in use. Call before begin_frame().
   float follow_ui_scale(double preference);
 
-  void begin_frame();  // polls events, starts an ImGui frame
+  void begin_frame();  // starts an ImGui frame
   void end_frame();    // renders ImGui over whatever was drawn and swaps
+
+  // Input: handles what arrived, or waits for it (at most `seconds`).
+  void poll_events();
+  void wait_events(double seconds);
+  // Makes a waiting wait_events() return: from any thread (a worker that finished).
+  static void wake();
+  // Key presses (GLFW key and modifiers; ImGui sees them too) and dropped files, as they come.
+  void on_key(std::function<void(int key, int mods)> handler);
+  void on_drop(std::function<void(const std::string& path)> handler);
+  // The user asked to close the window (the window stays open: the editor decides); true once
+  // per request.
+  bool take_close_request();
+
+  // Sizes in pixels: the framebuffer's (HiDPI: larger) and the window's; its position on screen.
+  std::pair<int, int> framebuffer_size() const;
+  std::pair<int, int> window_size() const;
+  std::pair<int, int> position() const;
 
  private:
   GLFWwindow* window_ = nullptr;
+  std::function<void(int, int)> key_handler_;
+  std::function<void(const std::string&)> drop_handler_;
   std::string ini_file_;  // kept alive: ImGui stores the pointer
   bool imgui_ready_ = false;
   float ui_scale_ = 0;  // applied

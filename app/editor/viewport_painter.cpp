@@ -1,9 +1,5 @@
 #include "app/editor/viewport_painter.hpp"
 
-#include "app/editor/gpu_view_copy.hpp"
-
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
 #include <imgui.h>
 
 #include <algorithm>
@@ -11,6 +7,7 @@
 #include <cstdio>
 #include <set>
 
+#include "app/editor/gpu_view_copy.hpp"
 #include "app/editor/logic/selection_properties.hpp"
 #include "app/editor/theme.hpp"
 #include "app/editor/viewport_overlays.hpp"
@@ -147,9 +144,8 @@ void ViewportPainter::update_guides(const ViewportFrame& f, int panel) {
 void ViewportPainter::draw_panel_gl(const ViewportFrame& f, int panel, const ColorRange& range,
                                     const DisplaySettings& display) {
   const ViewRect& r = f.panels[panel];
-  int fbw = 0, fbh = 0, ww = 0, wh = 0;
-  glfwGetFramebufferSize(f.window, &fbw, &fbh);
-  glfwGetWindowSize(f.window, &ww, &wh);
+  const auto [fbw, fbh] = f.window->framebuffer_size();
+  const auto [ww, wh] = f.window->window_size();
   const double sx = ww > 0 ? double(fbw) / ww : 1.0;
   Viewport v;
   v.x = int(std::lround(r.x * sx));
@@ -221,8 +217,7 @@ void ViewportPainter::draw_progress(const ViewportFrame& f) {
 }
 
 void ViewportPainter::paint(const ViewportFrame& f, const ColorRange& range) {
-  int fbw = 0, fbh = 0;
-  glfwGetFramebufferSize(f.window, &fbw, &fbh);
+  const auto [fbw, fbh] = f.window->framebuffer_size();
   glViewport(0, 0, fbw, fbh);
   glDisable(GL_SCISSOR_TEST);
   glClearColor(0.155f, 0.160f, 0.175f, 1.0f);

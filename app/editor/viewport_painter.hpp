@@ -12,23 +12,22 @@
 #include <string>
 #include <vector>
 
+#include "app/editor/gl_window.hpp"
 #include "app/editor/logic/continuity_monitor.hpp"
 #include "app/editor/logic/curve_marks.hpp"
 #include "app/editor/logic/preferences.hpp"
 #include "app/editor/logic/scene_picker.hpp"
+#include "app/editor/logic/scene_views.hpp"
 #include "app/editor/logic/selection.hpp"
 #include "app/editor/logic/surface_probe.hpp"
 #include "app/editor/logic/work_plane.hpp"
-#include "app/editor/logic/scene_views.hpp"
 #include "render/scene_renderer.hpp"
-
-struct GLFWwindow;
 
 namespace pl {
 
 // Everything one frame of the view shows.
 struct ViewportFrame {
-  GLFWwindow* window = nullptr;
+  const GlWindow* window = nullptr;
   const SceneRenderer* renderer = nullptr;
   SceneViews* views = nullptr;
   const Document* doc = nullptr;
