@@ -4,7 +4,7 @@
 
 #include "app/cli/cli.hpp"
 #include "app/editor/editor_main.hpp"
-#include "app/editor/logic/editor_invocation.hpp"
+#include "app/cli/editor_invocation.hpp"
 
 int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);

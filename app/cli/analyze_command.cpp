@@ -29,7 +29,7 @@ int run_analyze(std::span<const std::string> args, std::ostream& out, std::ostre
   const std::string file = a.positional()[0];
   check_input_name(file);
   ProgressLine::set_stage("reading " + printable(file));
-  const SceneReport report = analyze_input(load_input(file), density, scheme, file);
+  const SceneReport report = analyze_input(load_scene_file(file), density, scheme, file);
   out << (a.flag("--json") ? report_to_json(report) : report_to_text(report));
   return kExitOk;
 }

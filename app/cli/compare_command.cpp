@@ -41,7 +41,7 @@ int run_compare(std::span<const std::string> args, std::ostream& out, std::ostre
     options.schemes = parse_scheme_list(*list, "--schemes");
   if (const auto base = a.value("--base")) options.base = parse_comparable_scheme(*base, "--base");
   const std::string file = a.positional()[0];
-  const Scene scene = load_input(file);
+  const Scene scene = load_scene_file(file);
   if (!scene.network || scene.network->faces.empty())
     throw DataError(file, "network", "the scene has no network faces to compare");
   if (const auto list = a.value("--faces"))

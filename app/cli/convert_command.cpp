@@ -23,7 +23,7 @@ int run_convert(std::span<const std::string> args, std::ostream& out, std::ostre
     throw UsageError("convert writes .gbp or .json, not \"" + ext + "\"");
   const std::string file = a.positional()[0];
   check_input_name(file);
-  const Scene scene = load_input(file);
+  const Scene scene = load_scene_file(file);
   if (ext == ".gbp")
     write_gbp(*target, single_gb_patch(scene, file));
   else

@@ -38,7 +38,7 @@ int export_cad_file(const Arguments& a, const std::string& target, std::ostream&
   options.scheme = parse_scheme_option(a.value("--scheme"));
   options.source = a.positional()[0];
   ProgressLine::set_stage("reading " + printable(options.source));
-  const Scene scene = load_input(options.source);
+  const Scene scene = load_scene_file(options.source);
   // A scene too big for the work bound at the default density is checked at the largest density
   // within it (the CAD writers sample nothing at a density).
   const int density = std::max(1, largest_density_within(scene, kDefaultDensity));
@@ -94,7 +94,7 @@ int run_export(std::span<const std::string> args, std::ostream& out, std::ostrea
   const int density = a.integer("--density", kDefaultDensity, 1, kMaxDensity);
   const auto scheme = parse_scheme_option(a.value("--scheme"));
   ProgressLine::set_stage("reading " + printable(file));
-  const Scene scene = load_input(file);
+  const Scene scene = load_scene_file(file);
   out << mesh_export_summary(export_mesh_file(scene, *target, density, scheme, file), *target);
   return kExitOk;
 }

@@ -3,22 +3,9 @@
 #include "app/cli/arguments.hpp"
 #include "core/analysis/compared_schemes.hpp"
 #include "core/base/data_error.hpp"
-#include "core/io/gbp_io.hpp"
-#include "core/io/scene_io.hpp"
 #include "core/scene/network_edit.hpp"
 
 namespace pl {
-
-Scene load_input(const std::filesystem::path& path) {
-  const std::string ext = path.extension().string();
-  if (ext == ".json") return read_scene(path);
-  if (ext == ".gbp") {  // a scene with the one explicit GB patch of the file
-    Scene scene;
-    scene.patches.push_back({"", std::make_shared<GBPatch>(read_gbp(path))});
-    return scene;
-  }
-  throw DataError(path.string(), "", "unknown file type \"" + ext + "\" (expected .json or .gbp)");
-}
 
 void check_input_name(const std::string& file) {
   const std::string ext = std::filesystem::path(file).extension().string();

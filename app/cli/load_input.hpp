@@ -1,4 +1,5 @@
-// Opens a FILE argument of the CLI: a scene (.json) or a GB patch (.gbp).
+// The FILE argument of the CLI and the options naming schemes: checked before any file is opened.
+// The file itself is read by load_scene_file (app/document/scene_file.hpp).
 #pragma once
 
 #include <filesystem>
@@ -6,12 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "app/document/scene_file.hpp"
 #include "core/scene/scene.hpp"
 
 namespace pl {
-
-// Throws DataError for unreadable or malformed files and unknown extensions.
-Scene load_input(const std::filesystem::path& path);
 
 // The commands check their FILE's extension with their other arguments: a name that is neither
 // .json nor .gbp is wrong usage (UsageError), found before any file is opened.

@@ -9,7 +9,7 @@
 #include "app/cli/checked_scene.hpp"
 #include "app/cli/cli.hpp"
 #include "app/cli/commands.hpp"
-#include "app/cli/draw_scene_builder.hpp"
+#include "render/draw_scene_builder.hpp"
 #include "app/cli/load_input.hpp"
 #include "app/cli/progress_line.hpp"
 #include "app/cli/scene_outputs.hpp"
@@ -195,7 +195,7 @@ int run_render(std::span<const std::string> args, std::ostream& out, std::ostrea
   const std::string file = a.positional()[0];
   check_input_name(file);
   ProgressLine::set_stage("reading " + printable(file));
-  const Scene scene = load_input(file);
+  const Scene scene = load_scene_file(file);
   std::size_t patches = 0;
   try {
     const RenderedImage r = render_scene_image(scene, job, file);

@@ -47,4 +47,15 @@ void save_scene_file(const std::filesystem::path& file, const Scene& scene) {
     write_scene(file, scene);
 }
 
+Scene load_scene_file(const std::filesystem::path& path) {
+  const std::string ext = path.extension().string();
+  if (ext == ".json") return read_scene(path);
+  if (ext == ".gbp") {  // a scene with the one explicit GB patch of the file
+    Scene scene;
+    scene.patches.push_back({"", std::make_shared<GBPatch>(read_gbp(path))});
+    return scene;
+  }
+  throw DataError(path.string(), "", "unknown file type \"" + ext + "\" (expected .json or .gbp)");
+}
+
 }  // namespace pl

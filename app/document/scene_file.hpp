@@ -1,5 +1,5 @@
-// Writing a document where it can be read back: the file types a scene is saved as, chosen by
-// the file name's extension, exactly those load_input opens. `.json` is a scene; `.gbp` holds
+// A document's file, read and written: the file types a scene is opened from and saved as, chosen
+// by the file name's extension. `.json` is a scene; `.gbp` holds
 // one GB patch and nothing else (no names, no network), so a scene goes there only when that is
 // all it has. Any other extension is refused: a scene saved as "part.jsonn" would be invisible
 // to Open and to the command line.
@@ -16,12 +16,16 @@ namespace pl {
 
 enum class SceneFileType { Scene, Gbp };
 
-// The type of a file name (".json" or ".gbp", as load_input reads them), nullopt otherwise.
+// The type of a file name (".json" or ".gbp"), nullopt otherwise.
 std::optional<SceneFileType> scene_file_type(const std::filesystem::path& file);
 
 // The scene's one GB patch; throws DataError(file, ...) saying why a .gbp cannot hold the scene.
 const GBPatch& single_gb_patch(const Scene& scene, const std::string& file);
 bool fits_gbp(const Scene& scene);
+
+// Reads a scene (.json), or a GB patch (.gbp) as a scene of that one patch. Throws DataError for
+// unreadable or malformed files and unknown extensions.
+Scene load_scene_file(const std::filesystem::path& file);
 
 // Writes the scene atomically as the extension says. Throws DataError naming the file: an
 // unknown extension, a scene a .gbp cannot hold, or a failed write (the old file is kept).

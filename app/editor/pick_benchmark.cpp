@@ -3,8 +3,8 @@
 #include <chrono>
 #include <cstdio>
 
-#include "app/cli/draw_scene_builder.hpp"
-#include "app/cli/load_input.hpp"
+#include "render/draw_scene_builder.hpp"
+#include "app/document/scene_file.hpp"
 #include "app/editor/logic/preferences.hpp"
 #include "app/editor/logic/scene_picker.hpp"
 #include "app/editor/logic/surface_probe.hpp"
@@ -111,7 +111,7 @@ int run_pick_benchmark(const std::optional<std::filesystem::path>& file, std::os
   Scene large, small;
   try {
     if (file) {
-      large = load_input(*file);
+      large = load_scene_file(*file);
     } else {
       large.network = cube_sphere_network(16, FaceScheme::GB);
     }

@@ -82,7 +82,7 @@ void bind_document(py::module_& m) {
           [](const py::object& path) {
             const std::string file = fspath(path);
             py::gil_scoped_release release;
-            return PyDocument{Document(load_input(file), file)};
+            return PyDocument{Document(load_scene_file(file), file)};
           },
           py::arg("path"), "The document of a scene file (.json or .gbp).")
       .def_property_readonly(

@@ -1,5 +1,5 @@
 // patchlab.load, patchlab.loads and patchlab.Scene: reading, saving and evaluating a scene the
-// way the CLI does (load_input, save_scene_file, evaluate_checked).
+// way the CLI does (load_scene_file, save_scene_file, evaluate_checked).
 #include <filesystem>
 
 #include "app/cli/load_input.hpp"
@@ -86,7 +86,7 @@ void bind_scene(py::module_& m) {
       [](const py::object& path) {
         const std::string file = path_string(path);
         py::gil_scoped_release release;
-        return PyScene{load_input(file), file};
+        return PyScene{load_scene_file(file), file};
       },
       py::arg("path"),
       "Reads a scene (.json) or a GB patch (.gbp) as `patchlab FILE` does; raises DataError "

@@ -85,7 +85,7 @@ TEST(CurveMarks, ATickCrossesTheCurveOnScreen) {
 }
 
 TEST(CurveMarks, JointsOfTheAssetAreG0G1AndG2) {
-  const Scene scene = load_input(std::filesystem::path(PATCHLAB_SOURCE_DIR) / "assets" / "curves" /
+  const Scene scene = load_scene_file(std::filesystem::path(PATCHLAB_SOURCE_DIR) / "assets" / "curves" /
                                  "joints-g0-g1-g2.json");
   CurveMarks marks;
   EXPECT_TRUE(marks.follow(scene.curves));

@@ -112,7 +112,7 @@ TEST_F(AuthoringTools, AddVertexClicksLandOnTheWorkPlaneAndSelectTheNewVertex) {
 }
 
 TEST_F(AuthoringTools, AddVertexOnASurfaceTakesTheSurfacePoint) {
-  doc = Document(load_input(std::filesystem::path(PATCHLAB_SOURCE_DIR) / "assets/default.json"));
+  doc = Document(load_scene_file(std::filesystem::path(PATCHLAB_SOURCE_DIR) / "assets/default.json"));
   LiveSurfaces live(doc.scene(), 16, std::nullopt, "default");
   camera = preset_camera(ViewPreset::Iso, live.draw().bounds(), kRect.aspect());
   ScenePicker picker;
@@ -267,7 +267,7 @@ TEST_F(AuthoringTools, ANormalSeenEndOnLeavesItsVertexToThePointUnderTheCursor) 
 
 struct AuthoringOnDefault : AuthoringTools {
   AuthoringOnDefault() {
-    doc = Document(load_input(std::filesystem::path(PATCHLAB_SOURCE_DIR) / "assets/default.json"));
+    doc = Document(load_scene_file(std::filesystem::path(PATCHLAB_SOURCE_DIR) / "assets/default.json"));
     selection.adopt(doc.scene());
   }
 };

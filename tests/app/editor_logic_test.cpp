@@ -5,9 +5,9 @@
 #include <cmath>
 #include <fstream>
 
-#include "app/cli/draw_scene_builder.hpp"
+#include "render/draw_scene_builder.hpp"
 #include "app/cli/load_input.hpp"
-#include "app/editor/logic/editor_invocation.hpp"
+#include "app/cli/editor_invocation.hpp"
 #include "app/editor/logic/editor_paths.hpp"
 #include "app/editor/logic/file_listing.hpp"
 #include "app/editor/logic/grid_scene.hpp"
@@ -229,7 +229,7 @@ void expect_same_curves(const LiveCurves& a, const LiveCurves& b) {
 // Free curves get combs in the editor like network edges: one per span, equal to the CLI's
 // (free_curve_combs), none without combs; a moved point resamples its own curve only.
 TEST(EditorLiveCurves, FreeCurvesHaveCombsAndAnEditResamplesItsCurveOnly) {
-  Scene s = load_input(std::filesystem::path(PATCHLAB_SOURCE_DIR) / "assets" / "curves" /
+  Scene s = load_scene_file(std::filesystem::path(PATCHLAB_SOURCE_DIR) / "assets" / "curves" /
                        "bspline-knot-multiplicity.json");
   ASSERT_GE(s.curves.size(), 2u);
   LiveSurfaces live(s, 8, std::nullopt, "curves", 0);

@@ -17,7 +17,7 @@ namespace {
 const ViewRect kRect{0, 0, 900, 700};
 
 Scene default_scene() {
-  return load_input(std::filesystem::path(PATCHLAB_SOURCE_DIR) / "assets" / "default.json");
+  return load_scene_file(std::filesystem::path(PATCHLAB_SOURCE_DIR) / "assets" / "default.json");
 }
 
 Camera framing(const DrawScene& d, ViewPreset preset = ViewPreset::Iso) {
@@ -184,7 +184,7 @@ TEST(EditorPicking, FindsAPixelThatSelectsAFaceOrEdge) {
 // with the point of the line under the cursor, from which the curve actions take their
 // parameter; its points still win where they are; a network edge nearer the cursor wins.
 TEST(EditorPicking, AFreeCurveIsPickedByItsLine) {
-  Scene s = load_input(std::filesystem::path(PATCHLAB_SOURCE_DIR) / "assets" / "curves" /
+  Scene s = load_scene_file(std::filesystem::path(PATCHLAB_SOURCE_DIR) / "assets" / "curves" /
                        "bspline-knot-multiplicity.json");
   ASSERT_GE(s.curves.size(), 2u);
   const LiveSurfaces live(s, 8, std::nullopt, "curves");

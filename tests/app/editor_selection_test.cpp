@@ -16,7 +16,7 @@ namespace {
 using Kind = SelectionItem::Kind;
 
 Scene default_scene() {
-  return load_input(std::filesystem::path(PATCHLAB_SOURCE_DIR) / "assets" / "default.json");
+  return load_scene_file(std::filesystem::path(PATCHLAB_SOURCE_DIR) / "assets" / "default.json");
 }
 
 TEST(EditorSelection, ClickReplacesAddsAndToggles) {

@@ -17,7 +17,7 @@ namespace {
 const ViewRect kRect{0, 20, 1000, 700};
 
 struct ToolFixture : ::testing::Test {
-  Document doc{load_input(std::filesystem::path(PATCHLAB_SOURCE_DIR) / "assets" / "default.json")};
+  Document doc{load_scene_file(std::filesystem::path(PATCHLAB_SOURCE_DIR) / "assets" / "default.json")};
   Selection selection;
   WorkPlane plane;
   LiveSurfaces live{doc.scene(), 16, std::nullopt, "default"};

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "app/cli/draw_scene_builder.hpp"
+#include "render/draw_scene_builder.hpp"
 #include "app/document/curve_commands.hpp"
 #include "app/document/document.hpp"
 #include "app/editor/logic/live_surfaces.hpp"

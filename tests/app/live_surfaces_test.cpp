@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "app/cli/draw_scene_builder.hpp"
+#include "render/draw_scene_builder.hpp"
 #include "app/document/document.hpp"
 #include "app/document/network_commands.hpp"
 #include "core/network/sample_networks.hpp"

@@ -12,7 +12,7 @@
 #include <fstream>
 #include <random>
 
-#include "app/cli/draw_scene_builder.hpp"
+#include "render/draw_scene_builder.hpp"
 #include "app/cli/load_input.hpp"
 #include "cad_test_util.hpp"
 #include "core/cad/cad_export.hpp"
@@ -33,7 +33,7 @@ TEST(CadPicture, StepReadBackDrawsLikePatchLab) {
     GTEST_SKIP() << "no OpenGL: " << e.what();
   }
   const auto file = source_dir() / "assets/gregory-blob-closed.json";
-  const Scene scene = load_input(file);
+  const Scene scene = load_scene_file(file);
   const auto step = std::filesystem::temp_directory_path() /
                     ("patchlab-picture-" + std::to_string(std::random_device()()) + ".step");
   CadExportOptions options;

@@ -135,10 +135,10 @@ void round_trip_all(CadFormat format) {
   Worst worst;
   const auto scenes = asset_scenes();
   ASSERT_GE(scenes.size(), 16u);
-  for (const auto& f : scenes) check_round_trip(load_input(f), f, format, worst);
+  for (const auto& f : scenes) check_round_trip(load_scene_file(f), f, format, worst);
   const auto models = reference_models();
   ASSERT_EQ(models.size(), 8u) << "the GB reference models belong in tests/data/gb";
-  for (const auto& f : models) check_round_trip(load_input(f), f, format, worst);
+  for (const auto& f : models) check_round_trip(load_scene_file(f), f, format, worst);
   std::printf(
       "%s round trip: exact faces within %.3g of the size; fitted faces within %.3g of "
       "the tolerance, normals within %.4f deg\n",

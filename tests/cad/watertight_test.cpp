@@ -68,7 +68,7 @@ void check_closed(const Scene& scene, const std::string& what, std::optional<Fac
 }
 
 Scene blob() {
-  return load_input(source_dir() / "assets/gregory-blob-closed.json");
+  return load_scene_file(source_dir() / "assets/gregory-blob-closed.json");
 }
 
 Scene cube_sphere() {

@@ -1,7 +1,7 @@
 // The dependency rules of the code (docs/developing.md): core/ knows no GL, GLFW, ImGui, render/
 // or app/; render/ knows no GLFW, ImGui or app/; the editor's logic (app/editor/logic) knows no
-// window, UI or GL; and inside core/ every folder stands on a floor and includes only folders on
-// lower floors (or its own): no include runs up or sideways.
+// window, UI or GL; the editor knows no app/cli; and inside core/ every folder stands on a floor
+// and includes only folders on lower floors (or its own): no include runs up or sideways.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -138,6 +138,13 @@ TEST(Layering, EveryCoreFolderHasAFloor) {
         << " is not in the floor table of tests/core/layering_test.cpp: place it there";
   }
   EXPECT_GE(folders, 10);
+}
+
+TEST(Layering, EditorIncludesNoCommandLine) {
+  // The editor and the command line share the document (app/document) and the draw scene
+  // (render/draw_scene_builder); neither reaches into the other.
+  const auto bad = offending("app/editor", {"app/cli/"});
+  EXPECT_TRUE(bad.empty()) << bad.front();
 }
 
 TEST(Layering, CoreIncludesRunOnlyDownTheFloors) {

@@ -2,7 +2,7 @@
 // DrawScene flag the renderer uses to draw only the outer side of a solid seen from outside.
 #include <gtest/gtest.h>
 
-#include "app/cli/draw_scene_builder.hpp"
+#include "render/draw_scene_builder.hpp"
 #include "core/domain/tessellation_cache.hpp"
 #include "core/eval/scene_surfaces.hpp"
 #include "core/network/sample_networks.hpp"

@@ -13,7 +13,7 @@ namespace pl {
 namespace {
 
 TEST(DrawSceneBuilder, NetworkFacePointsAreDerivedAndShareTheNetworksPoints) {
-  const Scene scene = load_input(test::asset("default.json"));
+  const Scene scene = load_scene_file(test::asset("default.json"));
   const DrawScene d = test::file_draw_scene(test::asset("default.json"));
   const Network& net = *scene.network;
   const std::size_t network_points = net.vertices.size() + 2 * net.edges.size();
@@ -43,7 +43,7 @@ TEST(DrawSceneBuilder, NetworkFacePointsAreDerivedAndShareTheNetworksPoints) {
 }
 
 TEST(DrawSceneBuilder, HermiteDerivativesAreArrowsNotPoints) {
-  const Scene scene = load_input(test::asset("classic/hermite.json"));
+  const Scene scene = load_scene_file(test::asset("classic/hermite.json"));
   const DrawScene d = test::file_draw_scene(test::asset("classic/hermite.json"));
   const Patch& p = *scene.patches.at(0).patch;
   // Four corner positions; twelve arrows from them (two tangents and a twist per corner).
@@ -68,7 +68,7 @@ TEST(DrawSceneBuilder, HermiteDerivativesAreArrowsNotPoints) {
 }
 
 TEST(DrawSceneBuilder, ACatmullClarkSurfaceIsNettedOnce) {
-  const Scene scene = load_input(test::asset("classic/catmull-clark.json"));
+  const Scene scene = load_scene_file(test::asset("classic/catmull-clark.json"));
   const DrawScene d = test::file_draw_scene(test::asset("classic/catmull-clark.json"));
   const Patch& p = *scene.patches.at(0).patch;
   EXPECT_GT(d.surfaces.size(), 1u);  // one surface per base face

@@ -8,7 +8,7 @@
 #include <memory>
 #include <string>
 
-#include "app/cli/draw_scene_builder.hpp"
+#include "render/draw_scene_builder.hpp"
 #include "app/cli/load_input.hpp"
 #include "core/domain/tessellation_cache.hpp"
 #include "core/eval/patch_evaluator.hpp"
@@ -107,7 +107,7 @@ inline std::vector<Vec3> saddle_points() {
 // scheme for its network faces.
 inline DrawScene file_draw_scene(const std::string& path, std::optional<FaceScheme> scheme = {},
                                  int density = 24) {
-  const Scene scene = load_input(path);
+  const Scene scene = load_scene_file(path);
   static TessellationCache cache;
   return build_draw_scene(scene, evaluate_scene(scene, density, scheme, cache, path), 0);
 }

@@ -2,7 +2,7 @@
 
 #include <limits>
 
-#include "app/cli/draw_scene_builder.hpp"
+#include "render/draw_scene_builder.hpp"
 #include "app/document/curve_commands.hpp"
 #include "app/editor/logic/tool.hpp"
 

@@ -1,6 +1,6 @@
 #include "app/editor/logic/document_session.hpp"
 
-#include "app/cli/load_input.hpp"
+#include "app/document/scene_file.hpp"
 #include "app/document/scene_file.hpp"
 #include "core/base/data_error.hpp"
 
@@ -34,7 +34,7 @@ bool DocumentSession::read_only(const fs::path& path) const {
 }
 
 void DocumentSession::open(const fs::path& file) {
-  Scene scene = load_input(file);
+  Scene scene = load_scene_file(file);
   if (scene_file_type(file) && !read_only(file))
     replace(Document(std::move(scene), file));
   else

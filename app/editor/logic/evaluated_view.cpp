@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "app/cli/draw_scene_builder.hpp"
+#include "render/draw_scene_builder.hpp"
 
 namespace pl {
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "app/cli/draw_scene_builder.hpp"
+#include "render/draw_scene_builder.hpp"
 
 namespace pl {
 

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "app/cli/draw_scene_builder.hpp"
+#include "render/draw_scene_builder.hpp"
 #include "app/editor/logic/curve_edits.hpp"
 
 namespace pl {

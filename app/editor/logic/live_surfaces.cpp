@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
-#include "app/cli/draw_scene_builder.hpp"
+#include "render/draw_scene_builder.hpp"
 
 namespace pl {
 

@@ -1,6 +1,6 @@
 #include "app/editor/logic/new_curve_tool.hpp"
 
-#include "app/cli/draw_scene_builder.hpp"
+#include "render/draw_scene_builder.hpp"
 #include "app/document/curve_commands.hpp"
 
 namespace pl {

@@ -3,7 +3,7 @@
 #include <map>
 #include <unordered_set>
 
-#include "app/cli/draw_scene_builder.hpp"
+#include "render/draw_scene_builder.hpp"
 #include "core/base/data_error.hpp"
 #include "core/network/gb_face_free_points.hpp"
 #include "core/network/incremental_filling.hpp"

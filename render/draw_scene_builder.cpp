@@ -1,4 +1,4 @@
-#include "app/cli/draw_scene_builder.hpp"
+#include "render/draw_scene_builder.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "app/editor/logic/editor_invocation.hpp"
+#include "app/cli/editor_invocation.hpp"
 
 #include "app/cli/commands.hpp"
 

@@ -1,7 +1,8 @@
 // Turns an evaluated scene into the renderer's plain arrays (render/draw_scene.hpp): meshes with
 // exact normals and curvatures, the control net with point kinds, network curves and patch
-// borders with their curvature combs (comb_teeth tooth intervals per curve). The app does this so
-// the renderer never sees patch classes. The curve helpers below serve the editor too.
+// borders with their curvature combs (comb_teeth tooth intervals per curve). GL-free: the `render`
+// command and the editor share it, and the drawing code never sees patch classes. The curve
+// helpers below serve the editor too.
 #pragma once
 
 #include <array>
