@@ -62,42 +62,34 @@ std::string AddCurveCommand::label() const {
   return "add " + std::string(curve_type_name(type_)) + " curve";
 }
 
-void MoveCurvePointCommand::apply(Scene& scene) {
+void CurvePointCommand::apply(Scene& scene) {
   SceneCurve& c = curve_at(scene, curve_);
   if (point_ < 0 || point_ >= int(c.points.size()))
     throw EditRefused("curve " + std::to_string(curve_) + " has no point " +
                       std::to_string(point_));
-  c.points[point_] = position_;
+  edit(c, point_);
   check(c);
 }
 
-std::string MoveCurvePointCommand::label() const {
-  return "move curve " + std::to_string(curve_) + " point " + std::to_string(point_);
+std::string CurvePointCommand::label() const {
+  return std::string(what_) + " curve " + std::to_string(curve_) + " point " +
+         std::to_string(point_);
 }
 
-std::string MoveCurvePointCommand::merge_key() const {
-  return label();
+void MoveCurvePointCommand::edit(SceneCurve& c, int point) const {
+  c.points[point] = position_;
 }
 
-void SetCurveWeightCommand::apply(Scene& scene) {
-  SceneCurve& c = curve_at(scene, curve_);
+void SetCurveWeightCommand::edit(SceneCurve& c, int point) const {
   if (c.type != CurveType::BSpline && c.type != CurveType::Nurbs)
     throw EditRefused("only B-spline and NURBS curves have weights");
-  if (point_ < 0 || point_ >= int(c.points.size()))
-    throw EditRefused("curve " + std::to_string(curve_) + " has no point " +
-                      std::to_string(point_));
   if (!(weight_ > 0) || !std::isfinite(weight_))
     throw EditRefused("a weight must be positive and finite");
   if (c.type == CurveType::BSpline) {
     c.type = CurveType::Nurbs;
     c.weights.assign(c.points.size(), 1.0);
   }
-  c.weights[point_] = weight_;
-  check(c);
-}
-
-std::string SetCurveWeightCommand::label() const {
-  return "weight of curve " + std::to_string(curve_) + " point " + std::to_string(point_);
+  c.weights[point] = weight_;
 }
 
 void CurveOperationCommand::apply(Scene& scene) {

@@ -30,29 +30,45 @@ class AddCurveCommand final : public Command {
   int curve_ = -1;
 };
 
-class MoveCurvePointCommand final : public Command {
+// An edit of control point `point` of curve `curve`: refused where the curve has no such point,
+// where the edit itself refuses, or where it would leave a curve the reader rejects. The label
+// names the point: "<what> curve 2 point 5".
+class CurvePointCommand : public Command {
  public:
-  MoveCurvePointCommand(int curve, int point, Vec3 position)
-      : curve_(curve), point_(point), position_(position) {}
-  void apply(Scene& scene) override;
-  std::string label() const override;
-  std::string merge_key() const override;
+  void apply(Scene& scene) final;
+  std::string label() const final;
+
+ protected:
+  CurvePointCommand(const char* what, int curve, int point)
+      : what_(what), curve_(curve), point_(point) {}
 
  private:
+  // The edit itself, on a curve that has the point.
+  virtual void edit(SceneCurve& curve, int point) const = 0;
+
+  const char* what_;
   int curve_, point_;
+};
+
+class MoveCurvePointCommand final : public CurvePointCommand {
+ public:
+  MoveCurvePointCommand(int curve, int point, Vec3 position)
+      : CurvePointCommand("move", curve, point), position_(position) {}
+  std::string merge_key() const override { return label(); }
+
+ private:
+  void edit(SceneCurve& curve, int point) const override;
   Vec3 position_;
 };
 
 // A NURBS weight (a B-spline becomes a NURBS curve); refused unless finite and positive.
-class SetCurveWeightCommand final : public Command {
+class SetCurveWeightCommand final : public CurvePointCommand {
  public:
   SetCurveWeightCommand(int curve, int point, double weight)
-      : curve_(curve), point_(point), weight_(weight) {}
-  void apply(Scene& scene) override;
-  std::string label() const override;
+      : CurvePointCommand("weight of", curve, point), weight_(weight) {}
 
  private:
-  int curve_, point_;
+  void edit(SceneCurve& curve, int point) const override;
   double weight_;
 };
 

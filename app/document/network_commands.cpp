@@ -210,12 +210,16 @@ void SetFaceSchemeCommand::apply(Scene& scene) {
   check_network(net, face.loop);
 }
 
-void SetFaceNameCommand::apply(Scene& scene) {
-  set_face_name(network_of(scene), face_, name_);
+void RenameCommand::apply(Scene& scene) {
+  Network& net = network_of(scene);
+  if (element_ == Element::Face)
+    set_face_name(net, index_, name_);
+  else
+    set_edge_name(net, index_, name_);
 }
 
-void SetEdgeNameCommand::apply(Scene& scene) {
-  set_edge_name(network_of(scene), edge_, name_);
+std::string RenameCommand::label() const {
+  return (element_ == Element::Face ? "rename face " : "rename edge ") + str(index_);
 }
 
 void SetVertexNormalCommand::apply(Scene& scene) {

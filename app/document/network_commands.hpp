@@ -135,26 +135,34 @@ class SetFaceSchemeCommand final : public Command {
   bool interior_dropped_ = false;
 };
 
-class SetFaceNameCommand final : public Command {
+// Names a face or an edge ("" clears the name). Callers make a SetFaceNameCommand or a
+// SetEdgeNameCommand, which only say which element.
+class RenameCommand : public Command {
  public:
-  SetFaceNameCommand(int face, std::string name) : face_(face), name_(std::move(name)) {}
+  enum class Element { Face, Edge };
   void apply(Scene& scene) override;
-  std::string label() const override { return "rename face " + std::to_string(face_); }
+  std::string label() const override;
+
+ protected:
+  RenameCommand(Element element, int index, std::string name)
+      : element_(element), index_(index), name_(std::move(name)) {}
 
  private:
-  int face_;
+  Element element_;
+  int index_;
   std::string name_;
 };
 
-class SetEdgeNameCommand final : public Command {
+class SetFaceNameCommand final : public RenameCommand {
  public:
-  SetEdgeNameCommand(int edge, std::string name) : edge_(edge), name_(std::move(name)) {}
-  void apply(Scene& scene) override;
-  std::string label() const override { return "rename edge " + std::to_string(edge_); }
+  SetFaceNameCommand(int face, std::string name)
+      : RenameCommand(Element::Face, face, std::move(name)) {}
+};
 
- private:
-  int edge_;
-  std::string name_;
+class SetEdgeNameCommand final : public RenameCommand {
+ public:
+  SetEdgeNameCommand(int edge, std::string name)
+      : RenameCommand(Element::Edge, edge, std::move(name)) {}
 };
 
 // The tangent plane of vertex v: a fixed normal (stored; the vertex's handles turn with the

@@ -27,13 +27,19 @@ py::array view(const Evaluator& ev, const T* data, std::vector<py::ssize_t> shap
   return a;
 }
 
-// Column c (0: x ...) of a Vec3 member of each record of `records`, as an N x 3 view.
+// An N x `columns` view of `records`, one row per record: `columns` consecutive values of T, the
+// first at `first` in records[0] (nullptr when there are none).
+template <class T, class Record>
+py::array rows_view(const Evaluator& ev, const std::vector<Record>& records, const T* first,
+                    py::ssize_t columns) {
+  return view<T>(ev, first, {static_cast<py::ssize_t>(records.size()), columns},
+                 {py::ssize_t(sizeof(Record)), py::ssize_t(sizeof(T))});
+}
+
+// A Vec3 member of each record of `records`, as an N x 3 view.
 template <class Record>
 py::array vec3_view(const Evaluator& ev, const std::vector<Record>& records, Vec3 Record::*member) {
-  const py::ssize_t n = static_cast<py::ssize_t>(records.size());
-  const double* first = n ? &(records[0].*member).x : nullptr;
-  return view<double>(ev, first, {n, 3},
-                      {py::ssize_t(sizeof(Record)), py::ssize_t(sizeof(double))});
+  return rows_view(ev, records, records.empty() ? nullptr : &(records[0].*member).x, 3);
 }
 
 // A double member of each geometry record, as an N view.
@@ -51,6 +57,33 @@ py::array jet_view(const PySamples& s, Vec3 SurfaceJet::*member) {
   return vec3_view(s.evaluator, s.evaluator->jets(), member);
 }
 
+// An array property that is one member of every sample's record, and its docstring.
+template <class Member>
+struct MemberArray {
+  const char* name;
+  Member member;
+  const char* doc;
+};
+
+// The position and derivatives of the jets (jet_view).
+const MemberArray<Vec3 SurfaceJet::*> kJetArrays[] = {
+    {"positions", &SurfaceJet::p, "N x 3 sample positions."},
+    {"su", &SurfaceJet::su, "N x 3 first derivatives in u."},
+    {"sv", &SurfaceJet::sv, "N x 3 first derivatives in v."},
+    {"suu", &SurfaceJet::suu, "N x 3 second derivatives in u, u."},
+    {"suv", &SurfaceJet::suv, "N x 3 mixed second derivatives."},
+    {"svv", &SurfaceJet::svv, "N x 3 second derivatives in v, v."},
+};
+
+// The curvatures of the geometry records (scalar_view).
+const MemberArray<double SurfaceGeometry::*> kCurvatureArrays[] = {
+    {"mean_curvature", &SurfaceGeometry::mean,
+     "N mean curvatures H (positive where the surface bends towards the normal)."},
+    {"gaussian_curvature", &SurfaceGeometry::gaussian, "N Gaussian curvatures K."},
+    {"k_min", &SurfaceGeometry::kmin, "N minimum principal curvatures."},
+    {"k_max", &SurfaceGeometry::kmax, "N maximum principal curvatures."},
+};
+
 py::array changed_samples(PatchEvaluator& ev, std::size_t k) {
   const PatchEvaluator::Support support = ev.influence_support(k);
   if (support.all) {
@@ -67,17 +100,23 @@ py::array changed_samples(PatchEvaluator& ev, std::size_t k) {
 
 void bind_samples(py::module_& m) {
   static_assert(sizeof(Vec3) == 3 * sizeof(double) && sizeof(Vec2) == 2 * sizeof(double));
-  py::class_<PySamples>(m, "PatchSamples",
-                        "The samples of one surface, in the order of its OBJ vertices. The "
-                        "arrays are read-only views of PatchLab's own storage: a "
-                        "move_control_point shows in them; np.array(x) keeps a copy.")
-      .def_readonly("name", &PySamples::name, "The face's or patch's name, as in the OBJ file.")
+  py::class_<PySamples> samples(m, "PatchSamples",
+                                "The samples of one surface, in the order of its OBJ vertices. The "
+                                "arrays are read-only views of PatchLab's own storage: a "
+                                "move_control_point shows in them; np.array(x) keeps a copy.");
+  samples.def_readonly("name", &PySamples::name, "The face's or patch's name, as in the OBJ file.")
       .def_readonly("face", &PySamples::face, "Its network face index, or -1.")
       .def_readonly("patch", &PySamples::patch, "Its scene patch index, or -1.")
-      .def("__len__", [](const PySamples& s) { return s.evaluator->sample_count(); })
-      .def_property_readonly(
-          "positions", [](const PySamples& s) { return jet_view(s, &SurfaceJet::p); },
-          "N x 3 sample positions.")
+      .def("__len__", [](const PySamples& s) { return s.evaluator->sample_count(); });
+  for (const auto& a : kJetArrays)
+    samples.def_property_readonly(
+        a.name, [member = a.member](const PySamples& s) { return jet_view(s, member); }, a.doc);
+  for (const auto& a : kCurvatureArrays)
+    samples.def_property_readonly(
+        a.name,
+        [member = a.member](const PySamples& s) { return scalar_view(s.evaluator, member); },
+        a.doc);
+  samples
       .def_property_readonly(
           "normals",
           [](const PySamples& s) {
@@ -85,52 +124,17 @@ void bind_samples(py::module_& m) {
           },
           "N x 3 exact unit normals Su x Sv / |Su x Sv| (limits at singular samples).")
       .def_property_readonly(
-          "mean_curvature",
-          [](const PySamples& s) { return scalar_view(s.evaluator, &SurfaceGeometry::mean); },
-          "N mean curvatures H (positive where the surface bends towards the normal).")
-      .def_property_readonly(
-          "gaussian_curvature",
-          [](const PySamples& s) { return scalar_view(s.evaluator, &SurfaceGeometry::gaussian); },
-          "N Gaussian curvatures K.")
-      .def_property_readonly(
-          "k_min",
-          [](const PySamples& s) { return scalar_view(s.evaluator, &SurfaceGeometry::kmin); },
-          "N minimum principal curvatures.")
-      .def_property_readonly(
-          "k_max",
-          [](const PySamples& s) { return scalar_view(s.evaluator, &SurfaceGeometry::kmax); },
-          "N maximum principal curvatures.")
-      .def_property_readonly(
-          "su", [](const PySamples& s) { return jet_view(s, &SurfaceJet::su); },
-          "N x 3 first derivatives in u.")
-      .def_property_readonly(
-          "sv", [](const PySamples& s) { return jet_view(s, &SurfaceJet::sv); },
-          "N x 3 first derivatives in v.")
-      .def_property_readonly(
-          "suu", [](const PySamples& s) { return jet_view(s, &SurfaceJet::suu); },
-          "N x 3 second derivatives in u, u.")
-      .def_property_readonly(
-          "suv", [](const PySamples& s) { return jet_view(s, &SurfaceJet::suv); },
-          "N x 3 mixed second derivatives.")
-      .def_property_readonly(
-          "svv", [](const PySamples& s) { return jet_view(s, &SurfaceJet::svv); },
-          "N x 3 second derivatives in v, v.")
-      .def_property_readonly(
           "params",
           [](const PySamples& s) {
             const auto& xs = s.evaluator->tessellation().points;
-            const py::ssize_t n = static_cast<py::ssize_t>(xs.size());
-            return view<double>(s.evaluator, n ? &xs[0].x : nullptr, {n, 2},
-                                {py::ssize_t(sizeof(Vec2)), py::ssize_t(sizeof(double))});
+            return rows_view(s.evaluator, xs, xs.empty() ? nullptr : &xs[0].x, 2);
           },
           "N x 2 domain points (u, v) of the samples.")
       .def_property_readonly(
           "triangles",
           [](const PySamples& s) {
             const auto& t = s.evaluator->tessellation().triangles;
-            const py::ssize_t n = static_cast<py::ssize_t>(t.size());
-            return view<uint32_t>(s.evaluator, n ? t[0].data() : nullptr, {n, 3},
-                                  {py::ssize_t(sizeof(t[0])), py::ssize_t(sizeof(uint32_t))});
+            return rows_view(s.evaluator, t, t.empty() ? nullptr : t[0].data(), 3);
           },
           "T x 3 sample indices of the triangles, oriented like the normals.")
       .def_property_readonly(

@@ -30,6 +30,7 @@ TEST(CurveCommands, BuildEditSaveAnalyze) {
   for (int k = 1; k <= 5; ++k)
     doc.execute(std::make_unique<MoveCurvePointCommand>(0, 3, Vec3(2.5, 1 + 0.1 * k, 0.2)));
   EXPECT_EQ(doc.scene().curves[0].points[3], Vec3(2.5, 1.5, 0.2));
+  EXPECT_EQ(doc.undo_label(), "move curve 0 point 3");
   ASSERT_TRUE(doc.undo());
   EXPECT_EQ(doc.scene().curves[0].points, before_drag.curves[0].points);
   ASSERT_TRUE(doc.redo());
@@ -49,7 +50,8 @@ TEST(CurveCommands, BuildEditSaveAnalyze) {
 TEST(CurveCommands, OperationsKeepTheCurveAndRefusalsChangeNothing) {
   Document doc;
   doc.execute(std::make_unique<AddCurveCommand>(CurveType::Nurbs, six_points()));
-  doc.execute(std::make_unique<SetCurveWeightCommand>(0, 2, 3.0));
+  EXPECT_EQ(doc.execute(std::make_unique<SetCurveWeightCommand>(0, 2, 3.0)),
+            "weight of curve 0 point 2");
   EXPECT_EQ(doc.scene().curves[0].weights[2], 3.0);
   const SceneCurve c = doc.scene().curves[0];
   doc.execute(
@@ -70,6 +72,8 @@ TEST(CurveCommands, OperationsKeepTheCurveAndRefusalsChangeNothing) {
                    0, CurveOperationCommand::Operation::Split, 5.0)),
                EditRefused);
   EXPECT_THROW(doc.execute(std::make_unique<MoveCurvePointCommand>(7, 0, Vec3(0))), EditRefused);
+  EXPECT_THROW(doc.execute(std::make_unique<MoveCurvePointCommand>(0, 99, Vec3(0))), EditRefused);
+  EXPECT_THROW(doc.execute(std::make_unique<SetCurveWeightCommand>(0, -1, 2.0)), EditRefused);
   EXPECT_THROW(
       doc.execute(std::make_unique<AddCurveCommand>(CurveType::Interpolating, six_points())),
       EditRefused);

@@ -200,10 +200,15 @@ TEST(NetworkCommands, SchemesNamesAndNormals) {
   Document doc(s);
   EXPECT_EQ(expect_good_command(doc, std::make_unique<SetFaceSchemeCommand>(1, FaceScheme::GB)),
             "face 1 scheme gb");
-  expect_good_command(doc, std::make_unique<SetFaceNameCommand>(1, "side"));
+  EXPECT_EQ(expect_good_command(doc, std::make_unique<SetFaceNameCommand>(1, "side")),
+            "rename face 1");
   EXPECT_EQ(doc.scene().network->faces[1].name, "side");
-  expect_good_command(doc, std::make_unique<SetEdgeNameCommand>(3, "rim"));
+  const std::string face_3 = doc.scene().network->faces.at(3).name;
+  EXPECT_EQ(expect_good_command(doc, std::make_unique<SetEdgeNameCommand>(3, "rim")),
+            "rename edge 3");
   EXPECT_EQ(doc.scene().network->edges[3].name, "rim");
+  EXPECT_EQ(doc.scene().network->faces[3].name, face_3);  // an edge's rename names no face
+  expect_refused(doc, std::make_unique<SetEdgeNameCommand>(99, "x"), "edge 99 does not exist");
   // A split turns face 1 into a pentagon: Gregory is refused there.
   expect_good_command(doc, std::make_unique<SplitEdgeCommand>(3, 0.5));
   expect_refused(doc, std::make_unique<SetFaceSchemeCommand>(1, FaceScheme::Gregory),
