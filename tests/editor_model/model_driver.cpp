@@ -38,8 +38,8 @@ Vec2 whole_pixel(const Vec2& p) {
   return Vec2(std::nearbyint(p.x), std::nearbyint(p.y));  // the default mode: half to even
 }
 
-ModelDriver::ModelDriver(int width, int height, DocumentSession session) {
-  EditorModelOptions options;  // no autosave: nothing is written but what the test saves
+ModelDriver::ModelDriver(int width, int height, DocumentSession session,
+                         EditorModelOptions options) {
   model_ =
       std::make_unique<EditorModel>(options, std::move(session), default_preferences(), shell_);
   shell_.dirty = [this] { return model_->doc().dirty(); };

@@ -50,7 +50,8 @@ class ScriptedShell final : public EditorShell {
 class ModelDriver {
  public:
   // A window of `width` x `height` at UI scale 1 with the editor's theme.
-  ModelDriver(int width, int height, DocumentSession session = DocumentSession());
+  ModelDriver(int width, int height, DocumentSession session = DocumentSession(),
+              EditorModelOptions options = {});
 
   EditorModel& model() { return *model_; }
   ScriptedShell& shell() { return shell_; }
