@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 
 #include "render/draw_scene_builder.hpp"
 
@@ -126,34 +127,30 @@ EvaluatedView::EvaluatedView(const Document& doc, const ViewRequest& request,
     : EvaluatedView(evaluate_view(doc.scene(), doc.revision(), source_of(doc), request), copies) {}
 
 EvaluatedView::EvaluatedView(ViewEvaluation v, const ViewCopyFactory& copies)
-    : scheme_(v.scheme),
-      fine_budget_(v.fine_budget),
-      coarse_budget_(v.coarse_budget),
-      coarse_(std::move(v.coarse)),
-      fine_(std::move(v.fine)),
-      curves_(std::move(v.curves)),
-      fine_revision_(v.revision),
-      coarse_revision_(v.revision) {
-  copy_fine_ = make_view_copy(copies);
-  copy_coarse_ = make_view_copy(copies);
-  copy_fine_->update_meshes_and_curves(fine_->draw());
-  copy_coarse_->update_meshes_and_curves(coarse_->draw());
-  upload_net(*fine_, *copy_fine_, fine_net_key_);
-  // The curves are at the evaluation's revision already: upload them.
-  fine_curves_serial_ = curves_->serial();
-  copy_fine_->update_curves(curves_->network_comb_refs(), drawn_borders(),
+    : scheme_(v.scheme), curves_(std::move(v.curves)) {
+  for (auto [d, live, budget] : {std::tuple(&fine_, &v.fine, v.fine_budget),
+                                 std::tuple(&coarse_, &v.coarse, v.coarse_budget)}) {
+    d->live = std::move(*live);
+    d->copy = make_view_copy(copies);
+    d->budget = budget;
+    d->revision = v.revision;
+    d->copy->update_meshes_and_curves(d->live->draw());
+  }
+  upload_net(fine_);
+  // The curves are at the evaluation's revision already: give them to the fine copy.
+  fine_.curves.require(curves_->serial());
+  fine_.copy->update_curves(curves_->network_comb_refs(), drawn_borders(),
                             curves_->border_on_network(), curves_->free_comb_refs());
 }
 
-bool EvaluatedView::follow_curves(const Document& doc, const LiveSurfaces& live, uint64_t from,
-                                  const std::vector<int>& changed, ViewCopy& copy,
-                                  uint64_t& copy_serial) {
+bool EvaluatedView::follow_curves(const Document& doc, Density& d, uint64_t from,
+                                  const std::vector<int>& changed) {
+  const LiveSurfaces& live = *d.live;
   curves_->follow(doc.scene(), live.surfaces(), from, live.synced_revision(), changed,
                   &live.evaluation().filling().topology());
-  if (copy_serial == curves_->serial()) return false;
-  copy_serial = curves_->serial();
-  copy.update_curves(curves_->network_comb_refs(), drawn_borders(), curves_->border_on_network(),
-                     curves_->free_comb_refs());
+  if (!d.curves.require(curves_->serial())) return false;
+  d.copy->update_curves(curves_->network_comb_refs(), drawn_borders(), curves_->border_on_network(),
+                        curves_->free_comb_refs());
   return true;
 }
 
@@ -192,51 +189,41 @@ std::vector<int> sync_live(LiveSurfaces& live, const Document& doc) {
 }  // namespace
 
 bool EvaluatedView::follow(const Document& doc) {
-  if (doc.dragging()) {
-    const bool was_fine = !coarse_shown_;
-    coarse_shown_ = true;
-    if (coarse_revision_ == doc.revision())
-      return follow_curves(doc, *coarse_, coarse_->synced_revision(), {}, *copy_coarse_,
-                           coarse_curves_serial_) ||
-             was_fine;
-    coarse_revision_ = doc.revision();  // first: a failing sync is not retried every frame
-    const uint64_t from = coarse_->synced_revision();
-    const std::vector<int> changed = sync_live(*coarse_, doc);
-    last_eval_ms_ = coarse_->last_sync_ms();
-    copy_coarse_->update_meshes_and_curves(coarse_->draw());
-    follow_curves(doc, *coarse_, from, changed, *copy_coarse_, coarse_curves_serial_);
-    return true;
-  }
-  const bool was_coarse = coarse_shown_;
-  coarse_shown_ = false;
-  if (fine_revision_ == doc.revision())
-    return follow_curves(doc, *fine_, fine_->synced_revision(), {}, *copy_fine_,
-                         fine_curves_serial_) ||
-           was_coarse;
-  fine_revision_ = doc.revision();
-  const uint64_t from = fine_->synced_revision();
-  const std::vector<int> changed = sync_live(*fine_, doc);
-  last_eval_ms_ = fine_->last_sync_ms();
-  copy_fine_->update_meshes_and_curves(fine_->draw());
-  follow_curves(doc, *fine_, from, changed, *copy_fine_, fine_curves_serial_);
+  // While a drag is under way the coarse density follows and is drawn; at rest the fine one.
+  const bool dragging = doc.dragging();
+  const bool switched = coarse_shown_ != dragging;
+  coarse_shown_ = dragging;
+  return follow_density(doc, dragging ? coarse_ : fine_, switched);
+}
+
+bool EvaluatedView::follow_density(const Document& doc, Density& d, bool switched) {
+  if (d.revision == doc.revision())
+    return follow_curves(doc, d, d.live->synced_revision(), {}) || switched;
+  d.revision = doc.revision();  // first: a failing sync is not retried every frame
+  const uint64_t from = d.live->synced_revision();
+  const std::vector<int> changed = sync_live(*d.live, doc);
+  last_eval_ms_ = d.live->last_sync_ms();
+  d.copy->update_meshes_and_curves(d.live->draw());
+  follow_curves(doc, d, from, changed);
   return true;
 }
 
 bool EvaluatedView::fit_to_screen(
     const std::function<double(const Vec3& centre, double radius)>& pixels, const Document& doc) {
-  if (doc.dragging() || fine_revision_ != doc.revision()) return false;
-  bool drawn_changed =
-      !fine_->set_densities(choose_densities(sizes_of(*fine_, &pixels, fine_fitted_), fine_budget_))
-           .empty();
-  fine_fitted_ = true;
+  if (doc.dragging() || fine_.revision != doc.revision()) return false;
+  bool drawn_changed = !fine_.live
+                            ->set_densities(choose_densities(
+                                sizes_of(*fine_.live, &pixels, fine_.fitted), fine_.budget))
+                            .empty();
+  fine_.fitted = true;
   // The coarse view only when it shows the same surfaces (it catches up when a drag starts).
-  const bool coarse_current = coarse_revision_ == doc.revision();
+  const bool coarse_current = coarse_.revision == doc.revision();
   bool coarse_changed =
-      coarse_current && !coarse_
+      coarse_current && !coarse_.live
                              ->set_densities(choose_densities(
-                                 sizes_of(*coarse_, &pixels, coarse_fitted_), coarse_budget_))
+                                 sizes_of(*coarse_.live, &pixels, coarse_.fitted), coarse_.budget))
                              .empty();
-  coarse_fitted_ |= coarse_current;
+  coarse_.fitted |= coarse_current;
   // Curves: network edges by their own size on screen, borders by their surface's.
   std::vector<double> edge_pixels;
   if (doc.scene().network) {
@@ -252,26 +239,26 @@ bool EvaluatedView::fit_to_screen(
       edge_pixels.push_back(pixels(centre, radius));
       segments.push_back(edge_segments(cp, radius > 0 ? edge_pixels.back() / (2 * radius) : 0));
     }
-    if (fine_->set_curve_segments(segments)) drawn_changed = true;
-    if (coarse_current) coarse_changed |= coarse_->set_curve_segments(segments);
+    if (fine_.live->set_curve_segments(segments)) drawn_changed = true;
+    if (coarse_current) coarse_changed |= coarse_.live->set_curve_segments(segments);
   }
   std::vector<int> borders;
-  for (const SceneSurface& s : fine_->surfaces().surfaces) {
+  for (const SceneSurface& s : fine_.live->surfaces().surfaces) {
     const Sphere sphere = bounding_sphere(s.evaluator->patch());
     borders.push_back(curve_segments(pixels(sphere.centre, sphere.radius)));
   }
   if (borders != border_segments_) {
     border_segments_ = std::move(borders);
-    fine_curves_serial_ = coarse_curves_serial_ = UINT64_MAX;  // upload them again
-    drawn_changed |=
-        follow_curves(doc, *fine_, fine_->synced_revision(), {}, *copy_fine_, fine_curves_serial_);
+    fine_.curves.invalidate();  // given to the copies again, thinned anew
+    coarse_.curves.invalidate();
+    drawn_changed |= follow_curves(doc, fine_, fine_.live->synced_revision(), {});
   }
-  if (drawn_changed) copy_fine_->update_meshes_and_curves(fine_->draw());
-  if (coarse_changed) copy_coarse_->update_meshes_and_curves(coarse_->draw());
+  if (drawn_changed) fine_.copy->update_meshes_and_curves(fine_.live->draw());
+  if (coarse_changed) coarse_.copy->update_meshes_and_curves(coarse_.live->draw());
   // The sizes the control net is thinned for: each edge's and each surface's on screen.
   NetScreenSizes sizes;
   sizes.edge_pixels = std::move(edge_pixels);
-  for (const SceneSurface& s : fine_->surfaces().surfaces) {
+  for (const SceneSurface& s : fine_.live->surfaces().surfaces) {
     const Sphere sphere = bounding_sphere(s.evaluator->patch());
     sizes.surface_pixels.push_back(pixels(sphere.centre, sphere.radius));
   }
@@ -292,52 +279,48 @@ bool EvaluatedView::fit_to_screen(
 }
 
 void EvaluatedView::show_net(const NetFocus& focus, double point_px, const Document& doc) {
-  LiveSurfaces& live = coarse_shown_ ? *coarse_ : *fine_;
-  const NetKey key{&live, live.points_layout(), net_sizes_serial_, focus, point_px};
-  if (!(key == net_key_)) {
-    net_key_ = key;
+  Density& d = shown_density();
+  LiveSurfaces& live = *d.live;
+  if (thinning_key_.require({&live, live.points_layout(), net_sizes_serial_, focus, point_px})) {
     thinning_ = thin_control_net(live.points(), live.surfaces(),
                                  doc.scene().network ? &*doc.scene().network : nullptr, net_sizes_,
                                  focus, point_px);
     live.set_hidden_points(thinning_.hidden);
     ++net_serial_;
   }
-  upload_net(live, coarse_shown_ ? *copy_coarse_ : *copy_fine_,
-             coarse_shown_ ? coarse_net_key_ : fine_net_key_);
+  upload_net(d);
 }
 
-void EvaluatedView::upload_net(const LiveSurfaces& live, ViewCopy& copy, uint64_t& key) {
+void EvaluatedView::upload_net(Density& d) {
   // The points move with every sync (revision) and the hidden ones with every thinning.
-  const uint64_t k = live.synced_revision() * 0x9E3779B97F4A7C15ull ^ net_serial_ << 1 ^
-                     live.points_layout() << 40;
-  if (k == key) return;
-  key = k;
+  const LiveSurfaces& live = *d.live;
+  if (!d.net.require({live.synced_revision(), net_serial_, live.points_layout()})) return;
   const ScenePoints& pts = live.points();
   make_control_net(pts, true, net_scratch_);
   arrows_scratch_.clear();
   for (std::size_t a = 0; a < pts.arrows.size(); ++a)
     if (pts.shown(pts.arrow_base[a])) arrows_scratch_.push_back(pts.arrows[a]);
-  copy.set_net(net_scratch_, arrows_scratch_);
+  d.copy->set_net(net_scratch_, arrows_scratch_);
 }
 
 std::string EvaluatedView::density_note() const {
-  const std::vector<int> d = fine_->densities();
+  const std::vector<int> d = fine_.live->densities();
   if (d.empty()) return {};
   const auto [lo, hi] = std::minmax_element(d.begin(), d.end());
   char buf[160];
   std::snprintf(buf, sizeof buf, "face densities %d-%d, %zu k of %zu k triangles", *lo, *hi,
-                triangles_of(*fine_) / 1000, fine_budget_.triangles / 1000);
+                triangles_of(*fine_.live) / 1000, fine_.budget.triangles / 1000);
   return buf;
 }
 
 std::string EvaluatedView::drawing_note() const {
-  const std::vector<int> d = fine_->densities();
+  const std::vector<int> d = fine_.live->densities();
   std::string note;
-  if (std::any_of(d.begin(), d.end(), [&](int x) { return x < fine_budget_.max_density; })) {
+  if (std::any_of(d.begin(), d.end(), [&](int x) { return x < fine_.budget.max_density; })) {
     const auto [lo, hi] = std::minmax_element(d.begin(), d.end());
     char buf[160];
     std::snprintf(buf, sizeof buf, "densities %d-%d for size on screen (%zu k of %zu k triangles)",
-                  *lo, *hi, triangles_of(*fine_) / 1000, fine_budget_.triangles / 1000);
+                  *lo, *hi, triangles_of(*fine_.live) / 1000, fine_.budget.triangles / 1000);
     note = buf;
   }
   const std::string net = net_note();

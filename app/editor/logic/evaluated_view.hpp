@@ -18,12 +18,14 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 
 #include "app/document/document.hpp"
 #include "app/editor/logic/live_curves.hpp"
 #include "app/editor/logic/live_surfaces.hpp"
 #include "app/editor/logic/net_thinning.hpp"
 #include "app/editor/logic/view_copy.hpp"
+#include "core/base/derived_from.hpp"
 #include "core/eval/density_choice.hpp"
 #include "render/display_settings.hpp"
 
@@ -99,52 +101,64 @@ class EvaluatedView {
   // combs are off).
   void configure_combs(bool combs, int teeth) { curves_->configure(combs, teeth); }
 
-  const LiveSurfaces& shown() const { return coarse_shown_ ? *coarse_ : *fine_; }
-  const ViewCopy& copy() const { return coarse_shown_ ? *copy_coarse_ : *copy_fine_; }
-  const LiveSurfaces& fine() const { return *fine_; }
-  const LiveSurfaces& coarse() const { return *coarse_; }
+  const LiveSurfaces& shown() const { return *shown_density().live; }
+  const ViewCopy& copy() const { return *shown_density().copy; }
+  const LiveSurfaces& fine() const { return *fine_.live; }
+  const LiveSurfaces& coarse() const { return *coarse_.live; }
   const LiveCurves& curves() const { return *curves_; }
   bool settled() const { return !coarse_shown_; }
   std::optional<FaceScheme> scheme() const { return scheme_; }
   double last_eval_ms() const { return last_eval_ms_; }
 
  private:
-  // Brings the curves up to `live` (last synced from revision `from`, changing `changed`) and
-  // gives them to `copy` if it is older. Returns true when it did.
-  bool follow_curves(const Document& doc, const LiveSurfaces& live, uint64_t from,
-                     const std::vector<int>& changed, ViewCopy& copy, uint64_t& copy_serial);
+  // One density of the view: its live surfaces, their drawn copy and what the copy holds.
+  struct Density {
+    std::unique_ptr<LiveSurfaces> live;
+    std::unique_ptr<ViewCopy> copy;
+    DensityBudget budget;
+    uint64_t revision = 0;         // the document revision last synced to (or tried)
+    bool fitted = false;           // densities chosen from sizes on screen yet (they start uniform)
+    DerivedFrom<uint64_t> curves;  // the copy's curves: of this LiveCurves serial
+    // The copy's control net: of the points synced at this revision, thinned as the net serial
+    // says, laid out as points_layout() says.
+    DerivedFrom<std::tuple<uint64_t, uint64_t, uint64_t>> net;
+  };
+  const Density& shown_density() const { return coarse_shown_ ? coarse_ : fine_; }
+  Density& shown_density() { return coarse_shown_ ? coarse_ : fine_; }
+
+  // Brings the curves up to `d`'s surfaces (last synced from revision `from`, changing
+  // `changed`) and gives them to its copy if it holds older ones. Returns true when it did.
+  bool follow_curves(const Document& doc, Density& d, uint64_t from,
+                     const std::vector<int>& changed);
+  // Syncs `d` to the document; returns true when what it draws changed.
+  bool follow_density(const Document& doc, Density& d, bool switched);
 
   // The border polylines uploaded: LiveCurves' own, or every k-th point of one (a border a few
   // pixels long on screen needs a few segments, not 64).
   std::vector<const CurvatureComb*> drawn_borders();
-  // Gives the shown points of `live` to `copy` unless `key` says it holds them already.
-  void upload_net(const LiveSurfaces& live, ViewCopy& copy, uint64_t& key);
+  // Gives the shown points of `d` to its copy unless it holds them already.
+  void upload_net(Density& d);
 
   std::optional<FaceScheme> scheme_;
-  DensityBudget fine_budget_, coarse_budget_;
-  // Whether each view's densities were chosen from sizes on screen yet (they start uniform).
-  bool fine_fitted_ = false, coarse_fitted_ = false;
+  Density fine_, coarse_;
+  std::unique_ptr<LiveCurves> curves_;
   std::vector<int> border_segments_;  // per surface, from the last fit_to_screen
   std::vector<CurvatureComb> thin_borders_;
-  std::unique_ptr<LiveSurfaces> coarse_, fine_;
-  std::unique_ptr<LiveCurves> curves_;
-  std::unique_ptr<ViewCopy> copy_fine_, copy_coarse_;
-  uint64_t fine_revision_, coarse_revision_;
-  uint64_t fine_curves_serial_ = UINT64_MAX, coarse_curves_serial_ = UINT64_MAX;
   bool coarse_shown_ = false;
   double last_eval_ms_ = 0;
-  // Control-net thinning: the sizes it used, what it was computed for, and the uploads.
+  // Control-net thinning: the sizes it used (a serial moves when they do), what it was computed
+  // for, and a serial that moves with each thinning.
   NetScreenSizes net_sizes_;
   uint64_t net_sizes_serial_ = 0, net_serial_ = 0;
   struct NetKey {
     const LiveSurfaces* live = nullptr;
-    uint64_t layout = UINT64_MAX, sizes = UINT64_MAX;
+    uint64_t layout = 0, sizes = 0;
     NetFocus focus;
     double point_px = 0;
     bool operator==(const NetKey&) const = default;
-  } net_key_;
+  };
+  DerivedFrom<NetKey> thinning_key_;
   NetThinning thinning_;
-  uint64_t fine_net_key_ = UINT64_MAX, coarse_net_key_ = UINT64_MAX;
   ControlNet net_scratch_;
   std::vector<Arrow> arrows_scratch_;
 };
