@@ -35,7 +35,8 @@ template <class... T>
 struct PatchTypeList {};
 
 // Every concrete patch class a scene, a network filling or a reader can produce. A new patch
-// type is added here (and then every visit below that lacks an overload for it fails to compile).
+// type is added here; then every visit_patch_type without an overload for it fails to compile
+// (docs/developing.md, "Adding a patch type", lists them).
 using PatchTypes =
     PatchTypeList<BezierPatch, BSplinePatch, NurbsPatch, InterpolatingPatch, HermitePatch,
                   CoonsNetworkPatch, GregoryQuadPatch, GregoryTriPatch, GBPatch, GBRibbonPatch,
