@@ -5,7 +5,7 @@
 
 #include "core/base/data_error.hpp"
 #include "core/io/input_limits.hpp"
-#include "core/patch/catmull_clark_patch.hpp"
+#include "core/patch/patch_types.hpp"
 
 namespace pl {
 
@@ -44,7 +44,7 @@ WorkShape work_shape(const Scene& scene) {
       w.squares += samples_per_square(static_cast<int>(f.loop.size()));
   for (const ScenePatch& sp : scene.patches) {
     // A Catmull-Clark entry is one square per ptex face (n per n-gon).
-    if (const auto* cc = dynamic_cast<const CatmullClarkPatch*>(sp.patch.get())) {
+    if (const auto* cc = patch_as<CatmullClarkPatch>(sp.patch.get())) {
       w.squares += double(cc->limit().ptex_count());
       continue;
     }

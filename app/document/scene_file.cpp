@@ -3,6 +3,7 @@
 #include "core/base/data_error.hpp"
 #include "core/io/gbp_io.hpp"
 #include "core/io/scene_io.hpp"
+#include "core/patch/patch_types.hpp"
 
 namespace pl {
 
@@ -21,7 +22,7 @@ const GBPatch& single_gb_patch(const Scene& scene, const std::string& file) {
     throw DataError(file, "patches",
                     "a .gbp holds exactly one gb patch; this scene has " +
                         std::to_string(scene.patches.size()) + " explicit patches");
-  const auto* gb = dynamic_cast<const GBPatch*>(scene.patches[0].patch.get());
+  const auto* gb = patch_as<GBPatch>(scene.patches[0].patch.get());
   if (!gb)
     throw DataError(file, "patches[0]",
                     "a .gbp holds a gb patch; this patch is of type \"" +
@@ -31,7 +32,7 @@ const GBPatch& single_gb_patch(const Scene& scene, const std::string& file) {
 
 bool fits_gbp(const Scene& scene) {
   return !scene.network && scene.patches.size() == 1 &&
-         dynamic_cast<const GBPatch*>(scene.patches[0].patch.get()) != nullptr;
+         patch_as<GBPatch>(scene.patches[0].patch.get()) != nullptr;
 }
 
 void save_scene_file(const std::filesystem::path& file, const Scene& scene) {

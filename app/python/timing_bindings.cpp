@@ -4,7 +4,7 @@
 #include <chrono>
 
 #include "app/python/bindings.hpp"
-#include "core/patch/gb/gb_patch.hpp"
+#include "core/patch/patch_types.hpp"
 
 namespace pl::python {
 
@@ -53,7 +53,7 @@ void bind_timing(py::module_& m) {
   t.def(
       "gb_point_index",
       [](const PySamples& s, int i, int j, int k) {
-        const auto* gb = dynamic_cast<const GBPatch*>(&s.evaluator->patch());
+        const auto* gb = patch_as<GBPatch>(s.evaluator->patch());
         if (!gb) throw py::value_error("not a GB patch");
         if (i < 0 || j < 0 || j > gb->degree() || k < 0 || k >= gb->layers())
           throw py::index_error("no such GB control point");

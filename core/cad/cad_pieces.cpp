@@ -5,27 +5,15 @@
 #include "core/base/data_error.hpp"
 #include "core/cad/exact_surfaces.hpp"
 #include "core/network/network_filling.hpp"
-#include "core/patch/catmull_clark_patch.hpp"
-#include "core/patch/gap_fill_patch.hpp"
-#include "core/patch/gb/gb_patch.hpp"
-#include "core/patch/gb/gb_ribbon_patch.hpp"
+#include "core/patch/exact_boundary.hpp"
 #include "core/patch/gb/shared_basis.hpp"
-#include "core/patch/gregory_quad.hpp"
-#include "core/patch/gregory_tri.hpp"
-#include "core/patch/transfinite/ribbon_patch.hpp"
+#include "core/patch/patch_types.hpp"
 
 namespace pl {
 
 namespace {
 
 const DomainQuad kUnitSquare{Vec2(0, 0), Vec2(1, 0), Vec2(1, 1), Vec2(0, 1)};
-
-// Types whose boundary_curves() are the exact sides (Bézier rows the patch interpolates).
-bool exact_boundary_curves(const Patch& p) {
-  if (const auto* r = dynamic_cast<const RibbonPatch*>(&p)) return r->bezier_sides();
-  return dynamic_cast<const GregoryQuadPatch*>(&p) || dynamic_cast<const GregoryTriPatch*>(&p) ||
-         dynamic_cast<const GBPatch*>(&p) || dynamic_cast<const GBRibbonPatch*>(&p);
-}
 
 // The part [t0, t1] of a Bézier curve, reparameterised to [0, 1] (t0 > t1: reversed).
 BezierCurve sub_curve(const BezierCurve& c, double t0, double t1) {
@@ -88,7 +76,7 @@ std::optional<OnSide> side_of(const Domain& d, Vec2 a, Vec2 b) {
 void add_split_pieces(const std::shared_ptr<const Patch>& patch, const std::string& owner,
                       std::vector<CadPiece>& out) {
   const std::vector<DomainQuad> quads = split_into_quads(domain_polygon(patch->domain()));
-  const bool exact_sides = exact_boundary_curves(*patch);
+  const bool exact_sides = boundary_curves_are_exact(*patch);
   std::vector<BezierCurve> curves;
   if (exact_sides)
     for (const BezierCurve& c : patch->boundary_curves()) curves.push_back(lowest_degree(c));
@@ -148,7 +136,7 @@ void add_patch_pieces(const std::shared_ptr<const Patch>& patch, const std::stri
     out.push_back(exact_piece(patch, owner, owner, kUnitSquare, std::move(*exact)));
     return;
   }
-  if (auto* g = dynamic_cast<const GapFillPatch*>(patch.get())) {
+  if (const auto* g = patch_as<GapFillPatch>(*patch)) {
     // q over u in [0, 1/3], the fill over [1/3, 2/3], r over [2/3, 1] (gap_fill_patch.hpp).
     const double third = 1.0 / 3, two = 2.0 / 3;
     out.push_back(exact_piece(patch, owner, owner + ".q",
@@ -166,7 +154,7 @@ void add_patch_pieces(const std::shared_ptr<const Patch>& patch, const std::stri
                               bspline_surface(g->r())));
     return;
   }
-  if (auto* cc = dynamic_cast<const CatmullClarkPatch*>(patch.get())) {
+  if (const auto* cc = patch_as<CatmullClarkPatch>(*patch)) {
     auto faces = cc->face_patches();
     for (std::size_t k = 0; k < faces.size(); ++k) {
       std::shared_ptr<const Patch> face = std::move(faces[k]);

@@ -6,10 +6,7 @@
 
 #include "core/curve/bspline_curve.hpp"
 #include "core/math/bernstein.hpp"
-#include "core/patch/coons_network_patch.hpp"
-#include "core/patch/hermite_patch.hpp"
-#include "core/patch/interpolating_patch.hpp"
-#include "core/patch/pair_join_patch.hpp"
+#include "core/patch/patch_types.hpp"
 
 namespace pl {
 
@@ -152,30 +149,57 @@ CadSurface join_bezier_cells(int cu, int cv, const std::vector<BezierPatch>& cel
   return s;
 }
 
-std::optional<CadSurface> exact_surface(const Patch& patch) {
-  if (auto* b = dynamic_cast<const BezierPatch*>(&patch)) return bezier_surface(*b);
-  if (auto* b = dynamic_cast<const BSplinePatch*>(&patch)) return bspline_surface(*b);
-  if (auto* b = dynamic_cast<const NurbsPatch*>(&patch)) return nurbs_surface(*b);
-  const auto value = [&](Vec2 x) { return patch.evaluate(x).p; };
-  // Hermite (Ferguson) and interpolating patches are bicubic polynomials over the whole square.
-  if (dynamic_cast<const HermitePatch*>(&patch) || dynamic_cast<const InterpolatingPatch*>(&patch))
-    return bezier_surface(interpolate_polynomial(3, 3, value));
-  if (auto* c = dynamic_cast<const CoonsNetworkPatch*>(&patch)) {
-    // Each cell is a polynomial of bidegree (5, 5): cubic Hermite blends (degree 3) times the
-    // length terms S(v), lambda(v) (degree 1 and 3) and derivative blends (degree 2).
-    const int cu = int(c->ns()) - 1, cv = int(c->nt()) - 1;
-    std::vector<BezierPatch> cells;
-    for (int a = 0; a < cu; ++a)
-      for (int b = 0; b < cv; ++b)
-        cells.push_back(interpolate_polynomial(
-            5, 5, [&](Vec2 uv) { return c->cell_jet(std::size_t(a), std::size_t(b), uv).p; }));
-    return join_bezier_cells(cu, cv, cells);
-  }
-  if (auto* j = dynamic_cast<const PairJoinPatch*>(&patch)) {
-    // v in [0, 1/2] is B(u, 1 - 2v) (B with its v rows reversed), v in [1/2, 1] is A(u, 2v - 1).
-    return join_bezier_cells(1, 2, {reversed_v(j->final_patch(1)), j->final_patch(0)});
-  }
+namespace {
+
+// One answer per registered patch type (patch_types.hpp): the surface as one B-spline surface
+// where it is one, else none (the piece is fitted).
+std::optional<CadSurface> exact_of(const BezierPatch& b) {
+  return bezier_surface(b);
+}
+std::optional<CadSurface> exact_of(const BSplinePatch& b) {
+  return bspline_surface(b);
+}
+std::optional<CadSurface> exact_of(const NurbsPatch& b) {
+  return nurbs_surface(b);
+}
+// Hermite (Ferguson) and interpolating patches are bicubic polynomials over the whole square.
+std::optional<CadSurface> bicubic(const Patch& patch) {
+  return bezier_surface(interpolate_polynomial(3, 3, [&](Vec2 x) { return patch.evaluate(x).p; }));
+}
+std::optional<CadSurface> exact_of(const HermitePatch& p) {
+  return bicubic(p);
+}
+std::optional<CadSurface> exact_of(const InterpolatingPatch& p) {
+  return bicubic(p);
+}
+std::optional<CadSurface> exact_of(const CoonsNetworkPatch& c) {
+  // Each cell is a polynomial of bidegree (5, 5): cubic Hermite blends (degree 3) times the
+  // length terms S(v), lambda(v) (degree 1 and 3) and derivative blends (degree 2).
+  const int cu = int(c.ns()) - 1, cv = int(c.nt()) - 1;
+  std::vector<BezierPatch> cells;
+  for (int a = 0; a < cu; ++a)
+    for (int b = 0; b < cv; ++b)
+      cells.push_back(interpolate_polynomial(
+          5, 5, [&](Vec2 uv) { return c.cell_jet(std::size_t(a), std::size_t(b), uv).p; }));
+  return join_bezier_cells(cu, cv, cells);
+}
+std::optional<CadSurface> exact_of(const PairJoinPatch& j) {
+  // v in [0, 1/2] is B(u, 1 - 2v) (B with its v rows reversed), v in [1/2, 1] is A(u, 2v - 1).
+  return join_bezier_cells(1, 2, {reversed_v(j.final_patch(1)), j.final_patch(0)});
+}
+// Rational blends of ribbons (Gregory, GB, transfinite schemes), a subdivision limit, and a
+// composite whose middle is a blend: none is one B-spline surface.
+template <OneOf<GregoryQuadPatch, GregoryTriPatch, GBPatch, GBRibbonPatch, GBInteriorPatch,
+                RibbonPatch, CatmullClarkPatch, GapFillPatch>
+              T>
+std::optional<CadSurface> exact_of(const T&) {
   return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<CadSurface> exact_surface(const Patch& patch) {
+  return visit_patch_type(patch, [](const auto& p) { return exact_of(p); });
 }
 
 }  // namespace pl

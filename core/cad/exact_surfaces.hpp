@@ -32,8 +32,8 @@ CadSurface join_bezier_cells(int cells_u, int cells_v, const std::vector<BezierP
 
 // The exact form of any patch whose type is a polynomial or rational tensor-product surface
 // over its whole domain (bezier, bspline, nurbs, hermite, interpolating, coons-network,
-// pair-join); nullopt for every other type. Catmull-Clark faces and gap-fill pieces are
-// decided by the piece builder (cad_pieces.hpp).
+// pair-join); nullopt for every other registered type (one overload per type in the .cpp).
+// Catmull-Clark faces and gap-fill pieces are decided by the piece builder (cad_pieces.hpp).
 std::optional<CadSurface> exact_surface(const Patch& patch);
 
 }  // namespace pl

@@ -62,11 +62,15 @@ void make_bezier_spans(int p, std::vector<double>& U, std::vector<glm::dvec4>& P
   }
 }
 
-BSplineCurve BSplineCurve::inserted(double t) const {
-  if (!(t >= t_min() && t <= t_max()))
+void check_knot_insertion(int p, const std::vector<double>& knots, std::size_t count, double t) {
+  if (!(t >= knots[p] && t <= knots[count]))
     throw std::invalid_argument("knot outside the curve's range");
-  if (std::count(knots_.begin(), knots_.end(), t) >= p_)
+  if (std::count(knots.begin(), knots.end(), t) >= p)
     throw std::invalid_argument("knot multiplicity would exceed the degree");
+}
+
+BSplineCurve BSplineCurve::inserted(double t) const {
+  check_knot_insertion(p_, knots_, points_.size(), t);
   std::vector<double> U = knots_;
   std::vector<glm::dvec4> P;
   for (const Vec3& q : points_) P.emplace_back(q, 1.0);

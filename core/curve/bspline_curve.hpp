@@ -40,6 +40,9 @@ class BSplineCurve {
 // Boehm's algorithm on homogeneous points (NURBS use w P and w): inserts t once into knots and
 // updates points in place.
 void insert_knot(int p, std::vector<double>& knots, std::vector<glm::dvec4>& points, double t);
+// Throws std::invalid_argument unless knot t can be inserted once into a curve of degree p with
+// `count` points: t in [knots[p], knots[count]] (the curve's range) and its multiplicity below p.
+void check_knot_insertion(int p, const std::vector<double>& knots, std::size_t count, double t);
 // Inserts every knot needed so each span's p+1 control points are its Bézier points.
 void make_bezier_spans(int p, std::vector<double>& knots, std::vector<glm::dvec4>& points);
 

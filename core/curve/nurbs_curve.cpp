@@ -75,10 +75,7 @@ double NurbsCurve::curvature(double t) const {
 }
 
 NurbsCurve NurbsCurve::inserted(double t) const {
-  if (!(t >= t_min() && t <= t_max()))
-    throw std::invalid_argument("knot outside the curve's range");
-  if (std::count(knots_.begin(), knots_.end(), t) >= p_)
-    throw std::invalid_argument("knot multiplicity would exceed the degree");
+  check_knot_insertion(p_, knots_, points_.size(), t);
   std::vector<double> U = knots_;
   std::vector<glm::dvec4> P;
   for (std::size_t i = 0; i < points_.size(); ++i)

@@ -9,7 +9,7 @@
 
 #include "core/base/parallel_for.hpp"
 #include "core/patch/gb/shared_basis.hpp"
-#include "core/patch/transfinite/ribbon_patch.hpp"
+#include "core/patch/patch_types.hpp"
 
 namespace pl {
 
@@ -44,7 +44,7 @@ PatchEvaluator::PatchEvaluator(std::shared_ptr<Patch> patch,
       storage_(storage),
       pool_(std::move(pool)) {
   assert(patch_ && tessellation_);
-  const auto* ribbons = dynamic_cast<const RibbonPatch*>(patch_.get());
+  const auto* ribbons = patch_as<RibbonPatch>(patch_.get());
   domain_follows_points_ = ribbons && ribbons->domain_follows_curves();
   if (domain_follows_points_) domain_key_ = patch_->domain().key();
   const std::size_t n = tessellation_->points.size();

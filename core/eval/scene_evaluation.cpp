@@ -4,7 +4,7 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "core/patch/transfinite/ribbon_patch.hpp"
+#include "core/patch/patch_types.hpp"
 
 namespace pl {
 
@@ -29,8 +29,8 @@ bool follow(PatchEvaluator& ev, const Patch& target, std::size_t& moved) {
   // Ribbon patches of two schemes (or twist estimates, or midpoint settings: the central point
   // is solved from the points with the fullness as a coefficient) share their type, points and
   // domain but not their basis: such a face is evaluated afresh.
-  const auto* a = dynamic_cast<const RibbonPatch*>(&current);
-  const auto* b = dynamic_cast<const RibbonPatch*>(&target);
+  const auto* a = patch_as<RibbonPatch>(current);
+  const auto* b = patch_as<RibbonPatch>(target);
   if (a && b &&
       (a->scheme() != b->scheme() || a->options().twists != b->options().twists ||
        a->options().fullness != b->options().fullness ||
@@ -48,7 +48,7 @@ bool follow(PatchEvaluator& ev, const Patch& target, std::size_t& moved) {
 // Moves a face's interior patch onto the offsets of `face` (an interior edit): one axpy per
 // moved free point. False if the evaluator does not hold an interior patch.
 bool follow_interior(PatchEvaluator& ev, const NetworkFace& face, std::size_t& moved) {
-  const auto* patch = dynamic_cast<const GBInteriorPatch*>(&ev.patch());
+  const auto* patch = patch_as<GBInteriorPatch>(ev.patch());
   if (!patch) return false;
   std::vector<PatchEvaluator::PointMove> moves;
   for (const InteriorPointMove& m : interior_point_moves(*patch, face))

@@ -1,6 +1,7 @@
 // {"type": "bezier", "degree": [m, n], "points": [...]} of scene-format.md.
 #include "core/io/patch_codec.hpp"
 #include "core/patch/bezier_patch.hpp"
+#include "core/patch/patch_types.hpp"
 
 namespace pl {
 
@@ -16,7 +17,7 @@ std::unique_ptr<Patch> read_bezier_patch(const JsonNode& node) {
 }
 
 void write_bezier_patch(const Patch& patch, nlohmann::json& out) {
-  const auto& p = dynamic_cast<const BezierPatch&>(patch);
+  const auto& p = patch_ref<BezierPatch>(patch);
   out["degree"] = {p.degree_u(), p.degree_v()};
   out["points"] = points_json(p.control_points());
 }

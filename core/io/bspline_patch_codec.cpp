@@ -3,6 +3,7 @@
 #include "core/io/classic_codec_util.hpp"
 #include "core/io/patch_codec.hpp"
 #include "core/patch/bspline_patch.hpp"
+#include "core/patch/patch_types.hpp"
 
 namespace pl {
 
@@ -16,7 +17,7 @@ std::unique_ptr<Patch> read_bspline_patch(const JsonNode& node) {
 }
 
 void write_bspline_patch(const Patch& patch, nlohmann::json& out) {
-  const auto& s = dynamic_cast<const BSplinePatch&>(patch);
+  const auto& s = patch_ref<BSplinePatch>(patch);
   write_spline_grid(s.grid(), s.control_points(), out);
 }
 

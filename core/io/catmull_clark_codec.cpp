@@ -5,6 +5,7 @@
 
 #include "core/io/patch_codec.hpp"
 #include "core/patch/catmull_clark_patch.hpp"
+#include "core/patch/patch_types.hpp"
 
 namespace pl {
 
@@ -51,7 +52,7 @@ std::unique_ptr<Patch> read_catmull_clark(const JsonNode& node) {
 }
 
 void write_catmull_clark(const Patch& patch, nlohmann::json& out) {
-  const auto& cc = dynamic_cast<const CatmullClarkPatch&>(patch);
+  const auto& cc = patch_ref<CatmullClarkPatch>(patch);
   out["vertices"] = points_json(cc.control_points());
   out["faces"] = cc.limit().faces();
 }

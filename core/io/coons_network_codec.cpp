@@ -5,6 +5,7 @@
 #include "core/io/classic_codec_util.hpp"
 #include "core/io/patch_codec.hpp"
 #include "core/patch/coons_network_patch.hpp"
+#include "core/patch/patch_types.hpp"
 
 namespace pl {
 
@@ -46,7 +47,7 @@ std::unique_ptr<Patch> read_coons_network(const JsonNode& node) {
 }
 
 void write_coons_network(const Patch& patch, nlohmann::json& out) {
-  const auto& p = dynamic_cast<const CoonsNetworkPatch&>(patch);
+  const auto& p = patch_ref<CoonsNetworkPatch>(patch);
   out["size"] = {p.ns(), p.nt()};
   out["s"] = p.s();
   out["t"] = p.t();

@@ -3,6 +3,7 @@
 #include "core/io/patch_codec.hpp"
 #include "core/patch/bspline_patch.hpp"
 #include "core/patch/gap_fill_patch.hpp"
+#include "core/patch/patch_types.hpp"
 
 namespace pl {
 
@@ -12,12 +13,11 @@ std::unique_ptr<Patch> read_gap_fill(const JsonNode& node) {
   node.allow_only({"type", "name", "q", "r"});
   const auto q = kBSplinePatchCodec.read(node.at("q"));
   const auto r = kBSplinePatchCodec.read(node.at("r"));
-  return std::make_unique<GapFillPatch>(dynamic_cast<const BSplinePatch&>(*q),
-                                        dynamic_cast<const BSplinePatch&>(*r));
+  return std::make_unique<GapFillPatch>(patch_ref<BSplinePatch>(*q), patch_ref<BSplinePatch>(*r));
 }
 
 void write_gap_fill(const Patch& patch, nlohmann::json& out) {
-  const auto& g = dynamic_cast<const GapFillPatch&>(patch);
+  const auto& g = patch_ref<GapFillPatch>(patch);
   kBSplinePatchCodec.write(g.q(), out["q"]);
   kBSplinePatchCodec.write(g.r(), out["r"]);
 }

@@ -2,6 +2,7 @@
 // .gbp order (central point first), see GBPatch.
 #include "core/io/patch_codec.hpp"
 #include "core/patch/gb/gb_patch.hpp"
+#include "core/patch/patch_types.hpp"
 
 namespace pl {
 
@@ -17,7 +18,7 @@ std::unique_ptr<Patch> read_gb_patch(const JsonNode& node) {
 }
 
 void write_gb_patch(const Patch& patch, nlohmann::json& out) {
-  const auto& p = dynamic_cast<const GBPatch&>(patch);
+  const auto& p = patch_ref<GBPatch>(patch);
   out["sides"] = p.sides();
   out["degree"] = p.degree();
   out["points"] = points_json(p.control_points());

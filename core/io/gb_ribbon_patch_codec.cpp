@@ -3,6 +3,7 @@
 // points, boundary row first; consecutive ribbons repeat their shared corner point.
 #include "core/io/patch_codec.hpp"
 #include "core/patch/gb/gb_ribbon_patch.hpp"
+#include "core/patch/patch_types.hpp"
 
 namespace pl {
 
@@ -36,7 +37,7 @@ std::unique_ptr<Patch> read_gb_ribbon_patch(const JsonNode& node) {
 }
 
 void write_gb_ribbon_patch(const Patch& patch, nlohmann::json& out) {
-  const auto& p = dynamic_cast<const GBRibbonPatch&>(patch);
+  const auto& p = patch_ref<GBRibbonPatch>(patch);
   nlohmann::json dom = nlohmann::json::array();
   for (const Vec2& v : p.polygon().vertices()) dom.push_back({v.x, v.y});
   out["domain"] = dom;

@@ -5,20 +5,9 @@
 namespace pl {
 
 namespace {
-
-std::unique_ptr<Patch> read_hermite_patch(const JsonNode& node) {
-  node.allow_only({"type", "name", "q"});
-  const JsonNode q = node.at("q");
-  q.items(16);
-  return std::make_unique<HermitePatch>(q.points());
+constexpr char kKey[] = "q";
 }
 
-void write_hermite_patch(const Patch& patch, nlohmann::json& out) {
-  out["q"] = points_json(patch.control_points());
-}
-
-}  // namespace
-
-const PatchCodec kHermitePatchCodec{HermitePatch::kType, read_hermite_patch, write_hermite_patch};
+constinit const PatchCodec kHermitePatchCodec = point_list_codec<HermitePatch, kKey, 16>();
 
 }  // namespace pl

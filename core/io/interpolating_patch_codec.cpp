@@ -5,21 +5,10 @@
 namespace pl {
 
 namespace {
-
-std::unique_ptr<Patch> read_interpolating_patch(const JsonNode& node) {
-  node.allow_only({"type", "name", "points"});
-  const JsonNode pts = node.at("points");
-  pts.items(16);
-  return std::make_unique<InterpolatingPatch>(pts.points());
+constexpr char kKey[] = "points";
 }
 
-void write_interpolating_patch(const Patch& patch, nlohmann::json& out) {
-  out["points"] = points_json(patch.control_points());
-}
-
-}  // namespace
-
-const PatchCodec kInterpolatingPatchCodec{InterpolatingPatch::kType, read_interpolating_patch,
-                                          write_interpolating_patch};
+constinit const PatchCodec kInterpolatingPatchCodec =
+    point_list_codec<InterpolatingPatch, kKey, 16>();
 
 }  // namespace pl

@@ -2,6 +2,7 @@
 #include "core/io/classic_codec_util.hpp"
 #include "core/io/patch_codec.hpp"
 #include "core/patch/nurbs_patch.hpp"
+#include "core/patch/patch_types.hpp"
 
 namespace pl {
 
@@ -22,7 +23,7 @@ std::unique_ptr<Patch> read_nurbs_patch(const JsonNode& node) {
 }
 
 void write_nurbs_patch(const Patch& patch, nlohmann::json& out) {
-  const auto& s = dynamic_cast<const NurbsPatch&>(patch);
+  const auto& s = patch_ref<NurbsPatch>(patch);
   write_spline_grid(s.grid(), s.control_points(), out);
   out["weights"] = numbers_json(s.weights());
 }

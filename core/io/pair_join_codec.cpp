@@ -4,6 +4,7 @@
 #include "core/io/classic_codec_util.hpp"
 #include "core/io/patch_codec.hpp"
 #include "core/patch/pair_join_patch.hpp"
+#include "core/patch/patch_types.hpp"
 
 namespace pl {
 
@@ -45,7 +46,7 @@ std::unique_ptr<Patch> read_pair_join(const JsonNode& node) {
 }
 
 void write_pair_join(const Patch& patch, nlohmann::json& out) {
-  const auto& p = dynamic_cast<const PairJoinPatch&>(patch);
+  const auto& p = patch_ref<PairJoinPatch>(patch);
   out["order"] = p.order();
   out["aux_degree"] = {p.aux_degree_u(), p.aux_degree_v()};
   out["aux"] = points_json(p.control_points());

@@ -32,4 +32,11 @@ nlohmann::json points_json(const std::vector<Vec3>& points) {
   return a;
 }
 
+std::vector<Vec3> read_point_list(const JsonNode& node, const char* key, std::size_t count) {
+  node.allow_only({"type", "name", key});
+  const JsonNode points = node.at(key);
+  points.items(count);
+  return points.points();
+}
+
 }  // namespace pl

@@ -7,6 +7,7 @@
 
 #include "core/io/curve_codec.hpp"
 #include "core/io/patch_codec.hpp"
+#include "core/patch/patch_types.hpp"
 #include "core/patch/transfinite/ribbon_patch.hpp"
 
 namespace pl {
@@ -79,7 +80,7 @@ std::unique_ptr<Patch> read_ribbon_patch(const JsonNode& node) {
 }
 
 void write_ribbon_patch(const Patch& patch, nlohmann::json& out) {
-  const auto& p = dynamic_cast<const RibbonPatch&>(patch);
+  const auto& p = patch_ref<RibbonPatch>(patch);
   out["scheme"] = std::string(transfinite::ribbon_scheme_name(p.scheme()));
   nlohmann::json sides = nlohmann::json::array();
   for (const RibbonSide& s : p.sides())

@@ -9,6 +9,7 @@
 
 #include "core/base/data_error.hpp"
 #include "core/network/gb_face_interior.hpp"
+#include "core/patch/patch_types.hpp"
 
 namespace pl {
 
@@ -72,7 +73,7 @@ std::vector<InteriorPointMove> interior_point_moves(const GBInteriorPatch& patch
 
 void IncrementalFilling::note_patch(Face& face, const FacePatch& fp) {
   face.patch_side = fp.patch_side;
-  const auto* interior = dynamic_cast<const GBInteriorPatch*>(fp.patch.get());
+  const auto* interior = patch_as<GBInteriorPatch>(fp.patch.get());
   face.interior = interior != nullptr;
   face.centre = interior && interior->has_centre();
 }

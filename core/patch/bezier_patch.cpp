@@ -17,7 +17,7 @@ struct Bernstein3 {  // values and derivatives of all polynomials of one degree 
 }  // namespace
 
 BezierPatch::BezierPatch(int m, int n, std::vector<Vec3> points)
-    : PatchType(std::move(points)), m_(m), n_(n) {
+    : UnitSquarePatch(std::move(points)), m_(m), n_(n) {
   if (m < 1 || n < 1 || m > kMaxDegree || n > kMaxDegree)
     throw std::invalid_argument("Bézier patch degrees must be between 1 and 30");
   if (points_.size() != static_cast<std::size_t>((m + 1) * (n + 1)))

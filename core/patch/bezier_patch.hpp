@@ -7,18 +7,16 @@
 //        +--------------> u          side 3: u = 0  (P_0n .. P_00)
 #pragma once
 
-#include "core/domain/unit_square.hpp"
-#include "core/patch/patch.hpp"
+#include "core/patch/unit_square_patch.hpp"
 
 namespace pl {
 
-class BezierPatch final : public PatchType<BezierPatch> {
+class BezierPatch final : public UnitSquarePatch<BezierPatch> {
  public:
   static constexpr const char* kType = "bezier";  // the scene-format type name
   // Throws std::invalid_argument if degrees < 1 or the point count is not (m+1)(n+1).
   BezierPatch(int m, int n, std::vector<Vec3> points);
 
-  const Domain& domain() const override { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
   void basis(Vec2 x, std::span<Jet> out) const override;
   SurfaceJet evaluate(Vec2 x) const override;
@@ -31,7 +29,6 @@ class BezierPatch final : public PatchType<BezierPatch> {
 
  private:
   int m_, n_;
-  UnitSquareDomain domain_;
 };
 
 }  // namespace pl

@@ -11,18 +11,11 @@ namespace pl {
 
 BSplinePatch::BSplinePatch(int p, int q, std::vector<double> ku, std::vector<double> kv,
                            std::size_t nu, std::size_t nv, std::vector<Vec3> points)
-    : PatchType(std::move(points)), grid_(p, q, std::move(ku), std::move(kv), nu, nv) {
+    : SplineGridPatch(std::move(points), SplineGrid(p, q, std::move(ku), std::move(kv), nu, nv)) {
   if (points_.size() != nu * nv)
     throw std::invalid_argument("a " + std::to_string(nu) + " x " + std::to_string(nv) +
                                 " spline patch needs " + std::to_string(nu * nv) + " points, got " +
                                 std::to_string(points_.size()));
-}
-
-ControlPointKind BSplinePatch::kind(std::size_t k) const {
-  const std::size_t i = k / grid_.nv(), j = k % grid_.nv();
-  return (i == 0 || j == 0 || i + 1 == grid_.nu() || j + 1 == grid_.nv())
-             ? ControlPointKind::Boundary
-             : ControlPointKind::Inner;
 }
 
 void BSplinePatch::basis(Vec2 x, std::span<Jet> out) const {
@@ -108,10 +101,6 @@ Vec3 spline_boundary_point(const SplineGrid& g, const std::vector<Vec3>& points,
 
 Vec3 BSplinePatch::boundary_point(int side, double t) const {
   return spline_boundary_point(grid_, points_, {}, side, t);
-}
-
-std::vector<BezierCurve> BSplinePatch::boundary_curves() const {
-  return spline_boundary_curves(grid_, points_);
 }
 
 BSplinePatch BSplinePatch::inserted_u(double t) const {

@@ -4,44 +4,27 @@
 // point's column only where its support is, so drags touch (p+1)(q+1) spans of samples.
 #pragma once
 
-#include "core/domain/unit_square.hpp"
-#include "core/patch/patch.hpp"
-#include "core/patch/spline_grid.hpp"
+#include "core/patch/spline_grid_patch.hpp"
 
 namespace pl {
 
-class BSplinePatch final : public PatchType<BSplinePatch> {
+class BSplinePatch final : public SplineGridPatch<BSplinePatch> {
  public:
   static constexpr const char* kType = "bspline";  // the scene-format type name
   // Throws std::invalid_argument for invalid knots or points.size() != nu * nv.
   BSplinePatch(int p, int q, std::vector<double> knots_u, std::vector<double> knots_v,
                std::size_t nu, std::size_t nv, std::vector<Vec3> points);
 
-  const Domain& domain() const override { return domain_; }
-  ControlPointKind kind(std::size_t k) const override;
   void basis(Vec2 x, std::span<Jet> out) const override;
   SurfaceJet evaluate(Vec2 x) const override;
   void influence(std::size_t k, std::span<const Vec2> xs, std::span<Jet> out) const override;
-  // Exact when a side is one polynomial span (its Bézier form); a multi-span side is returned
-  // as one Bézier curve on its B-spline control polygon, which has the same end points but is
-  // not the side (the interface has no piecewise curve).
-  std::vector<BezierCurve> boundary_curves() const override;
   // The side's B-spline curve (spline_boundary_point), exact for any knots.
   Vec3 boundary_point(int side, double t) const override;
 
-  const SplineGrid& grid() const { return grid_; }
   // The same surface with knot t (in the knot range, not the domain) inserted in u or v.
   BSplinePatch inserted_u(double t) const;
   BSplinePatch inserted_v(double t) const;
-
- private:
-  SplineGrid grid_;
-  UnitSquareDomain domain_;
 };
-
-// Side curves of a spline grid of (homogeneous, when weighted) points; shared with NURBS.
-std::vector<BezierCurve> spline_boundary_curves(const SplineGrid& g,
-                                                const std::vector<Vec3>& points);
 
 // The point at side parameter t of side `side` of a B-spline (weights empty) or NURBS grid,
 // through the curve classes (BSplineCurve, NurbsCurve), independently of SplineGrid::local():

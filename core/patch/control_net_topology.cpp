@@ -4,22 +4,8 @@
 #include <cmath>
 #include <utility>
 
-#include "core/patch/bezier_patch.hpp"
-#include "core/patch/bspline_patch.hpp"
-#include "core/patch/catmull_clark_patch.hpp"
-#include "core/patch/coons_network_patch.hpp"
-#include "core/patch/gap_fill_patch.hpp"
 #include "core/patch/gb/default_net.hpp"
-#include "core/patch/gb/gb_interior_patch.hpp"
-#include "core/patch/gb/gb_patch.hpp"
-#include "core/patch/gb/gb_ribbon_patch.hpp"
-#include "core/patch/gregory_quad.hpp"
-#include "core/patch/gregory_tri.hpp"
-#include "core/patch/hermite_patch.hpp"
-#include "core/patch/interpolating_patch.hpp"
-#include "core/patch/nurbs_patch.hpp"
-#include "core/patch/pair_join_patch.hpp"
-#include "core/patch/transfinite/ribbon_patch.hpp"
+#include "core/patch/patch_types.hpp"
 
 namespace pl {
 
@@ -62,27 +48,27 @@ std::vector<Segment> grid_segments(std::size_t nu, std::size_t nv, uint32_t firs
   return s;
 }
 
-ControlNetTopology bezier_net(const BezierPatch& p) {
+ControlNetTopology net_of(const BezierPatch& p) {
   return positions_only(p.size(), grid_segments(p.degree_u() + 1, p.degree_v() + 1));
 }
 
-ControlNetTopology spline_net(const BSplinePatch& p) {
+ControlNetTopology net_of(const BSplinePatch& p) {
   return positions_only(p.size(), grid_segments(p.grid().nu(), p.grid().nv()));
 }
 
-ControlNetTopology spline_net(const NurbsPatch& p) {
+ControlNetTopology net_of(const NurbsPatch& p) {
   return positions_only(p.size(), grid_segments(p.grid().nu(), p.grid().nv()));
 }
 
-ControlNetTopology interpolating_net(const InterpolatingPatch& p) {
+ControlNetTopology net_of(const InterpolatingPatch& p) {
   return positions_only(p.size(), grid_segments(4, 4));
 }
 
-ControlNetTopology pair_join_net(const PairJoinPatch& p) {
+ControlNetTopology net_of(const PairJoinPatch& p) {
   return positions_only(p.size(), grid_segments(p.aux_degree_u() + 1, p.aux_degree_v() + 1));
 }
 
-ControlNetTopology gap_fill_net(const GapFillPatch& p) {
+ControlNetTopology net_of(const GapFillPatch& p) {
   std::vector<Segment> s = grid_segments(p.q().grid().nu(), p.q().grid().nv());
   const std::vector<Segment> r =
       grid_segments(p.r().grid().nu(), p.r().grid().nv(), u32(p.q().size()));
@@ -90,7 +76,7 @@ ControlNetTopology gap_fill_net(const GapFillPatch& p) {
   return positions_only(p.size(), std::move(s));
 }
 
-ControlNetTopology hermite_net(const HermitePatch& p) {
+ControlNetTopology net_of(const HermitePatch& p) {
   // points[a * 4 + b] = Q_ab: r(i, j) at (i, j), r_u(i, j) at (2 + i, j), r_v(i, j) at (i, 2 + j),
   // r_uv(i, j) at (2 + i, 2 + j).
   auto at = [](int a, int b) { return u32(a * 4 + b); };
@@ -107,7 +93,7 @@ ControlNetTopology hermite_net(const HermitePatch& p) {
   return t;
 }
 
-ControlNetTopology coons_network_net(const CoonsNetworkPatch& p) {
+ControlNetTopology net_of(const CoonsNetworkPatch& p) {
   const std::size_t ns = p.ns(), nt = p.nt();
   auto node = [&](std::size_t i, std::size_t j, int q) { return u32((i * nt + j) * 4 + q); };
   std::vector<Segment> s;
@@ -159,11 +145,11 @@ ControlNetTopology gregory_like(const P& p, int sides, int row, bool zigzag) {
 
 }  // namespace
 
-ControlNetTopology gregory_net(const GregoryQuadPatch& p) {
+ControlNetTopology net_of(const GregoryQuadPatch& p) {
   return gregory_like(p, 4, 4, false);
 }
 
-ControlNetTopology gregory_net(const GregoryTriPatch& p) {
+ControlNetTopology net_of(const GregoryTriPatch& p) {
   return gregory_like(p, 3, 5, true);
 }
 
@@ -190,17 +176,17 @@ std::vector<Segment> gbp_net_segments(int n, int d) {
 
 }  // namespace
 
-ControlNetTopology gb_net(const GBPatch& p) {
+ControlNetTopology net_of(const GBPatch& p) {
   return positions_only(p.size(), gbp_net_segments(p.sides(), p.degree()));
 }
 
-ControlNetTopology gb_interior_net(const GBInteriorPatch& p) {
+ControlNetTopology net_of(const GBInteriorPatch& p) {
   ControlNetTopology t = positions_only(p.size(), gbp_net_segments(p.sides(), p.degree()));
   for (std::size_t k = p.net_size(); k < p.size(); ++k) t.is_vector[k] = true;  // not drawn
   return t;
 }
 
-ControlNetTopology gb_ribbon_net(const GBRibbonPatch& p) {
+ControlNetTopology net_of(const GBRibbonPatch& p) {
   std::vector<Segment> s;
   for (int i = 0; i < p.sides(); ++i) {
     const int d = p.degree(i), l = p.layers(i);
@@ -218,7 +204,7 @@ ControlNetTopology gb_ribbon_net(const GBRibbonPatch& p) {
 // curves of one degree d (every network face, and most files), vector j is drawn as an arrow from
 // the curve's point j to P_j + D_j / d, the ribbon's inner Bézier row (the Chiyokura–Kimura inner
 // points of a network face); otherwise the vectors are not drawn.
-ControlNetTopology ribbon_net(const RibbonPatch& p) {
+ControlNetTopology net_of(const RibbonPatch& p) {
   ControlNetTopology t;
   t.is_vector.assign(p.size(), false);
   std::vector<Segment> s;
@@ -241,7 +227,7 @@ ControlNetTopology ribbon_net(const RibbonPatch& p) {
   return t;
 }
 
-ControlNetTopology catmull_clark_net(const CatmullClarkPatch& p) {
+ControlNetTopology net_of(const CatmullClarkPatch& p) {
   std::vector<Segment> s;
   for (const std::vector<int>& face : p.limit().faces())
     for (std::size_t k = 0; k < face.size(); ++k)
@@ -250,22 +236,9 @@ ControlNetTopology catmull_clark_net(const CatmullClarkPatch& p) {
 }
 
 ControlNetTopology control_net_topology(const Patch& patch) {
-  if (const auto* p = dynamic_cast<const BezierPatch*>(&patch)) return bezier_net(*p);
-  if (const auto* p = dynamic_cast<const BSplinePatch*>(&patch)) return spline_net(*p);
-  if (const auto* p = dynamic_cast<const NurbsPatch*>(&patch)) return spline_net(*p);
-  if (const auto* p = dynamic_cast<const InterpolatingPatch*>(&patch)) return interpolating_net(*p);
-  if (const auto* p = dynamic_cast<const PairJoinPatch*>(&patch)) return pair_join_net(*p);
-  if (const auto* p = dynamic_cast<const GapFillPatch*>(&patch)) return gap_fill_net(*p);
-  if (const auto* p = dynamic_cast<const HermitePatch*>(&patch)) return hermite_net(*p);
-  if (const auto* p = dynamic_cast<const CoonsNetworkPatch*>(&patch)) return coons_network_net(*p);
-  if (const auto* p = dynamic_cast<const GregoryQuadPatch*>(&patch)) return gregory_net(*p);
-  if (const auto* p = dynamic_cast<const GregoryTriPatch*>(&patch)) return gregory_net(*p);
-  if (const auto* p = dynamic_cast<const GBPatch*>(&patch)) return gb_net(*p);
-  if (const auto* p = dynamic_cast<const GBRibbonPatch*>(&patch)) return gb_ribbon_net(*p);
-  if (const auto* p = dynamic_cast<const GBInteriorPatch*>(&patch)) return gb_interior_net(*p);
-  if (const auto* p = dynamic_cast<const CatmullClarkPatch*>(&patch)) return catmull_clark_net(*p);
-  if (const auto* p = dynamic_cast<const RibbonPatch*>(&patch)) return ribbon_net(*p);
-  return positions_only(patch.size(), {});
+  // One net_of overload per registered type (patch_types.hpp): a type without one does not
+  // compile here.
+  return visit_patch_type(patch, [](const auto& p) { return net_of(p); });
 }
 
 Vec3 arrow_tip(const Patch& patch, const DerivativeArrow& arrow) {

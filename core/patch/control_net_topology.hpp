@@ -52,45 +52,45 @@ struct ControlNetTopology {
   std::vector<bool> is_vector;
 };
 
-// The net of any patch (dispatches on the type below). A type without a net (none today) gets no
-// segments; every point is then a position.
+// The net of any registered patch type: its net_of overload below, chosen through
+// visit_patch_type (patch_types.hpp), which has no default, so every type has its own net.
 ControlNetTopology control_net_topology(const Patch& patch);
 
 // Where an arrow's tip is drawn.
 Vec3 arrow_tip(const Patch& patch, const DerivativeArrow& arrow);
 
-// Per family. Grids (i * nv + j) give their rows and columns.
+// Per type. Grids (i * nv + j) give their rows and columns.
 std::vector<std::array<uint32_t, 2>> grid_segments(std::size_t nu, std::size_t nv,
                                                    uint32_t first = 0);
-ControlNetTopology bezier_net(const BezierPatch& p);
-ControlNetTopology spline_net(const BSplinePatch& p);
-ControlNetTopology spline_net(const NurbsPatch& p);
-ControlNetTopology interpolating_net(const InterpolatingPatch& p);
-ControlNetTopology pair_join_net(const PairJoinPatch& p);  // the auxiliary patch's grid
-ControlNetTopology gap_fill_net(const GapFillPatch& p);    // q's grid and r's grid
+ControlNetTopology net_of(const BezierPatch& p);
+ControlNetTopology net_of(const BSplinePatch& p);
+ControlNetTopology net_of(const NurbsPatch& p);
+ControlNetTopology net_of(const InterpolatingPatch& p);
+ControlNetTopology net_of(const PairJoinPatch& p);  // the auxiliary patch's grid
+ControlNetTopology net_of(const GapFillPatch& p);   // q's grid and r's grid
 // The four corner points as a quadrilateral; tangents and twists as arrows.
-ControlNetTopology hermite_net(const HermitePatch& p);
+ControlNetTopology net_of(const HermitePatch& p);
 // The grid of node positions; r_s, r_t, r_st as arrows, scaled by the node's mean parameter
 // spacing along its row (column) so that they are the handles of the boundary cubics.
-ControlNetTopology coons_network_net(const CoonsNetworkPatch& p);
+ControlNetTopology net_of(const CoonsNetworkPatch& p);
 // Per side: the boundary row, the inner row through its two twins and the lines from the twins
 // to the boundary points they pull on; at every corner, the pair of twins that split one
 // Bézier point.
-ControlNetTopology gregory_net(const GregoryQuadPatch& p);
-ControlNetTopology gregory_net(const GregoryTriPatch& p);
+ControlNetTopology net_of(const GregoryQuadPatch& p);
+ControlNetTopology net_of(const GregoryTriPatch& p);
 // Per ribbon: rows (parallel to the side) and spokes (towards the centre) of its (d+1) x l grid,
 // shared corner blocks once; the central point is joined to the middle of the innermost row.
-ControlNetTopology gb_net(const GBPatch& p);
-// A network GB face with interior control: its degree-d net drawn as gb_net draws a .gbp net; the
+ControlNetTopology net_of(const GBPatch& p);
+// A network GB face with interior control: its degree-d net, drawn as a GBPatch's net; the
 // entries after the net (the default filling's points, the free points' defaults) hidden.
-ControlNetTopology gb_interior_net(const GBInteriorPatch& p);
+ControlNetTopology net_of(const GBInteriorPatch& p);
 // Per ribbon: the rows and spokes of its grid.
-ControlNetTopology gb_ribbon_net(const GBRibbonPatch& p);
+ControlNetTopology net_of(const GBRibbonPatch& p);
 // The base mesh's edges (the cage).
-ControlNetTopology catmull_clark_net(const CatmullClarkPatch& p);
+ControlNetTopology net_of(const CatmullClarkPatch& p);
 // Each side's curve a polyline; the cross derivatives' control vectors arrows from the curve's
 // points to the ribbon's inner Bézier row where curve and cross derivative share one Bézier
 // degree, else hidden.
-ControlNetTopology ribbon_net(const RibbonPatch& p);
+ControlNetTopology net_of(const RibbonPatch& p);
 
 }  // namespace pl

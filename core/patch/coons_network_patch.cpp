@@ -14,7 +14,7 @@ CoonsNetworkPatch::CoonsNetworkPatch(std::size_t ns, std::size_t nt,
                                      std::vector<std::vector<double>> s,
                                      std::vector<std::vector<double>> t, std::vector<Vec3> data,
                                      Lengths lengths)
-    : PatchType(std::move(data)),
+    : UnitSquarePatch(std::move(data)),
       ns_(ns),
       nt_(nt),
       s_(std::move(s)),

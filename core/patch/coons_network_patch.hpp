@@ -10,13 +10,12 @@
 // spacing of its direction), which causes flat spots and wiggles on unequal spacing.
 #pragma once
 
-#include "core/domain/unit_square.hpp"
 #include "core/patch/coons_cell.hpp"
-#include "core/patch/patch.hpp"
+#include "core/patch/unit_square_patch.hpp"
 
 namespace pl {
 
-class CoonsNetworkPatch final : public PatchType<CoonsNetworkPatch> {
+class CoonsNetworkPatch final : public UnitSquarePatch<CoonsNetworkPatch> {
  public:
   static constexpr const char* kType = "coons-network";  // the scene-format type name
   enum class Lengths { Network, Equal };
@@ -27,7 +26,6 @@ class CoonsNetworkPatch final : public PatchType<CoonsNetworkPatch> {
                     std::vector<std::vector<double>> t, std::vector<Vec3> data,
                     Lengths lengths = Lengths::Network);
 
-  const Domain& domain() const override { return domain_; }
   ControlPointKind kind(std::size_t k) const override;
   void basis(Vec2 x, std::span<Jet> out) const override;
   SurfaceJet evaluate(Vec2 x) const override;
@@ -63,7 +61,6 @@ class CoonsNetworkPatch final : public PatchType<CoonsNetworkPatch> {
   std::vector<std::vector<double>> s_, t_;
   Lengths lengths_;
   double mean_s_ = 1, mean_t_ = 1;
-  UnitSquareDomain domain_;
 };
 
 }  // namespace pl

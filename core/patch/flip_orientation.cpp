@@ -3,18 +3,10 @@
 #include <algorithm>
 #include <numeric>
 #include <stdexcept>
+#include <type_traits>
+#include <utility>
 
-#include "core/patch/bezier_patch.hpp"
-#include "core/patch/bspline_patch.hpp"
-#include "core/patch/catmull_clark_patch.hpp"
-#include "core/patch/coons_network_patch.hpp"
-#include "core/patch/gb/gb_patch.hpp"
-#include "core/patch/gb/gb_ribbon_patch.hpp"
-#include "core/patch/gregory_quad.hpp"
-#include "core/patch/gregory_tri.hpp"
-#include "core/patch/hermite_patch.hpp"
-#include "core/patch/interpolating_patch.hpp"
-#include "core/patch/nurbs_patch.hpp"
+#include "core/patch/patch_types.hpp"
 
 namespace pl {
 
@@ -57,7 +49,7 @@ int mirrored_side(int i, int n) {
   return ((1 - i) % n + n) % n;
 }
 
-FlippedPatch flip_gb(const GBPatch& p) {
+FlippedPatch flip_type(const GBPatch& p) {
   const int n = p.sides(), d = p.degree(), l = p.layers();
   Index old{0};  // the central point stays
   for (int k = 0; k < l; ++k)
@@ -67,7 +59,7 @@ FlippedPatch flip_gb(const GBPatch& p) {
   return {std::move(flipped), std::move(old)};
 }
 
-FlippedPatch flip_gb_ribbons(const GBRibbonPatch& p) {
+FlippedPatch flip_type(const GBRibbonPatch& p) {
   const int n = p.sides();
   std::vector<Vec2> vertices;
   for (int m = 0; m < n; ++m) {
@@ -91,7 +83,7 @@ FlippedPatch flip_gb_ribbons(const GBRibbonPatch& p) {
   return {std::move(flipped), std::move(old)};
 }
 
-FlippedPatch flip_coons(const CoonsNetworkPatch& p) {
+FlippedPatch flip_type(const CoonsNetworkPatch& p) {
   const std::size_t ns = p.ns(), nt = p.nt();
   // Nodes transposed; r_s and r_t trade places, r and r_st stay.
   constexpr int kSwap[4] = {0, 2, 1, 3};
@@ -109,62 +101,85 @@ FlippedPatch same_type(const Patch& p, Index old) {
   return {std::make_unique<P>(permuted(p.control_points(), old)), std::move(old)};
 }
 
+FlippedPatch flip_type(const BezierPatch& p) {
+  Index old = transposed(p.degree_u() + 1, p.degree_v() + 1);
+  return {
+      std::make_unique<BezierPatch>(p.degree_v(), p.degree_u(), permuted(p.control_points(), old)),
+      std::move(old)};
+}
+
+FlippedPatch flip_type(const BSplinePatch& p) {
+  const SplineGrid& g = p.grid();
+  Index old = transposed(g.nu(), g.nv());
+  return {std::make_unique<BSplinePatch>(g.q(), g.p(), g.knots_v(), g.knots_u(), g.nv(), g.nu(),
+                                         permuted(p.control_points(), old)),
+          std::move(old)};
+}
+
+FlippedPatch flip_type(const NurbsPatch& p) {
+  const SplineGrid& g = p.grid();
+  Index old = transposed(g.nu(), g.nv());
+  return {
+      std::make_unique<NurbsPatch>(g.q(), g.p(), g.knots_v(), g.knots_u(), g.nv(), g.nu(),
+                                   permuted(p.control_points(), old), permuted(p.weights(), old)),
+      std::move(old)};
+}
+
+FlippedPatch flip_type(const InterpolatingPatch& p) {
+  return same_type<InterpolatingPatch>(p, transposed(4, 4));
+}
+
+// r(u, v) = F(u) Q F(v)^T, so r(v, u) has the matrix Q^T.
+FlippedPatch flip_type(const HermitePatch& p) {
+  return same_type<HermitePatch>(p, transposed(4, 4));
+}
+
+FlippedPatch flip_type(const GregoryQuadPatch& p) {
+  return same_type<GregoryQuadPatch>(p, gregory_flip<GregoryQuadPatch>(4, 3));
+}
+
+FlippedPatch flip_type(const GregoryTriPatch& p) {
+  return same_type<GregoryTriPatch>(p, gregory_flip<GregoryTriPatch>(3, 4));
+}
+
+// Every face loop reversed: each face is seen from the other side.
+FlippedPatch flip_type(const CatmullClarkPatch& p) {
+  std::vector<std::vector<int>> faces = p.limit().faces();
+  for (auto& f : faces) std::reverse(f.begin(), f.end());
+  Index old(p.size());
+  std::iota(old.begin(), old.end(), std::size_t{0});
+  return {std::make_unique<CatmullClarkPatch>(p.control_points(), std::move(faces)),
+          std::move(old)};
+}
+
+// The types that are not flipped as a patch: a composite's construction fixes which piece lies on
+// which side, and a network face (ribbons, GB with interior control) is the network's to orient.
+struct NotFlippable {};
+template <OneOf<PairJoinPatch, GapFillPatch, GBInteriorPatch, RibbonPatch> T>
+NotFlippable flip_type(const T&) {
+  return {};
+}
+
+// Every registered type has a flip_type overload (else the visits below do not compile); its
+// return type says whether the type flips.
+template <class T>
+constexpr bool kFlippable =
+    !std::is_same_v<decltype(flip_type(std::declval<const T&>())), NotFlippable>;
+
 }  // namespace
 
-bool can_flip_orientation(const Patch& p) {
-  return dynamic_cast<const BezierPatch*>(&p) || dynamic_cast<const BSplinePatch*>(&p) ||
-         dynamic_cast<const NurbsPatch*>(&p) || dynamic_cast<const InterpolatingPatch*>(&p) ||
-         dynamic_cast<const HermitePatch*>(&p) || dynamic_cast<const CoonsNetworkPatch*>(&p) ||
-         dynamic_cast<const GregoryQuadPatch*>(&p) || dynamic_cast<const GregoryTriPatch*>(&p) ||
-         dynamic_cast<const GBPatch*>(&p) || dynamic_cast<const GBRibbonPatch*>(&p) ||
-         dynamic_cast<const CatmullClarkPatch*>(&p);
+bool can_flip_orientation(const Patch& patch) {
+  return visit_patch_type(patch, []<class T>(const T&) { return kFlippable<T>; });
 }
 
 FlippedPatch flipped_orientation(const Patch& patch) {
-  if (const auto* p = dynamic_cast<const BezierPatch*>(&patch)) {
-    Index old = transposed(p->degree_u() + 1, p->degree_v() + 1);
-    return {std::make_unique<BezierPatch>(p->degree_v(), p->degree_u(),
-                                          permuted(p->control_points(), old)),
-            std::move(old)};
-  }
-  if (const auto* p = dynamic_cast<const BSplinePatch*>(&patch)) {
-    const SplineGrid& g = p->grid();
-    Index old = transposed(g.nu(), g.nv());
-    return {std::make_unique<BSplinePatch>(g.q(), g.p(), g.knots_v(), g.knots_u(), g.nv(), g.nu(),
-                                           permuted(p->control_points(), old)),
-            std::move(old)};
-  }
-  if (const auto* p = dynamic_cast<const NurbsPatch*>(&patch)) {
-    const SplineGrid& g = p->grid();
-    Index old = transposed(g.nu(), g.nv());
-    return {std::make_unique<NurbsPatch>(g.q(), g.p(), g.knots_v(), g.knots_u(), g.nv(), g.nu(),
-                                         permuted(p->control_points(), old),
-                                         permuted(p->weights(), old)),
-            std::move(old)};
-  }
-  if (dynamic_cast<const InterpolatingPatch*>(&patch))
-    return same_type<InterpolatingPatch>(patch, transposed(4, 4));
-  // r(u, v) = F(u) Q F(v)^T, so r(v, u) has the matrix Q^T.
-  if (dynamic_cast<const HermitePatch*>(&patch))
-    return same_type<HermitePatch>(patch, transposed(4, 4));
-  if (const auto* p = dynamic_cast<const CoonsNetworkPatch*>(&patch)) return flip_coons(*p);
-  if (dynamic_cast<const GregoryQuadPatch*>(&patch))
-    return same_type<GregoryQuadPatch>(patch, gregory_flip<GregoryQuadPatch>(4, 3));
-  if (dynamic_cast<const GregoryTriPatch*>(&patch))
-    return same_type<GregoryTriPatch>(patch, gregory_flip<GregoryTriPatch>(3, 4));
-  if (const auto* p = dynamic_cast<const GBPatch*>(&patch)) return flip_gb(*p);
-  if (const auto* p = dynamic_cast<const GBRibbonPatch*>(&patch)) return flip_gb_ribbons(*p);
-  if (const auto* p = dynamic_cast<const CatmullClarkPatch*>(&patch)) {
-    // Every face loop reversed: each face is seen from the other side.
-    std::vector<std::vector<int>> faces = p->limit().faces();
-    for (auto& f : faces) std::reverse(f.begin(), f.end());
-    Index old(p->size());
-    std::iota(old.begin(), old.end(), std::size_t{0});
-    return {std::make_unique<CatmullClarkPatch>(p->control_points(), std::move(faces)),
-            std::move(old)};
-  }
-  throw std::invalid_argument("cannot flip the orientation of a \"" + patch.type() +
-                              "\" patch (its pieces are built for one side)");
+  return visit_patch_type(patch, []<class T>(const T& p) -> FlippedPatch {
+    if constexpr (kFlippable<T>)
+      return flip_type(p);
+    else
+      throw std::invalid_argument("cannot flip the orientation of a \"" + p.type() +
+                                  "\" patch (its pieces are built for one side)");
+  });
 }
 
 }  // namespace pl

@@ -12,8 +12,7 @@ namespace pl {
 
 NurbsPatch::NurbsPatch(int p, int q, std::vector<double> ku, std::vector<double> kv, std::size_t nu,
                        std::size_t nv, std::vector<Vec3> points, std::vector<double> weights)
-    : PatchType(std::move(points)),
-      grid_(p, q, std::move(ku), std::move(kv), nu, nv),
+    : SplineGridPatch(std::move(points), SplineGrid(p, q, std::move(ku), std::move(kv), nu, nv)),
       weights_(std::move(weights)) {
   if (points_.size() != nu * nv)
     throw std::invalid_argument("a " + std::to_string(nu) + " x " + std::to_string(nv) +
@@ -48,13 +47,6 @@ NurbsPatch NurbsPatch::cylinder(Vec3 b, double r, double h) {
       w.push_back(ring.weights()[i]);
     }
   return NurbsPatch(2, 1, ring.knots(), {0, 0, 1, 1}, 9, 2, std::move(pts), std::move(w));
-}
-
-ControlPointKind NurbsPatch::kind(std::size_t k) const {
-  const std::size_t i = k / grid_.nv(), j = k % grid_.nv();
-  return (i == 0 || j == 0 || i + 1 == grid_.nu() || j + 1 == grid_.nv())
-             ? ControlPointKind::Boundary
-             : ControlPointKind::Inner;
 }
 
 namespace {
@@ -100,10 +92,6 @@ void NurbsPatch::influence(std::size_t k, std::span<const Vec2> xs, std::span<Je
 
 Vec3 NurbsPatch::boundary_point(int side, double t) const {
   return spline_boundary_point(grid_, points_, weights_, side, t);
-}
-
-std::vector<BezierCurve> NurbsPatch::boundary_curves() const {
-  return spline_boundary_curves(grid_, points_);
 }
 
 NurbsPatch NurbsPatch::inserted_u(double t) const {

@@ -3,13 +3,11 @@
 // control points (incremental drags work as for every patch). Points and weights at i*nv + j.
 #pragma once
 
-#include "core/domain/unit_square.hpp"
-#include "core/patch/patch.hpp"
-#include "core/patch/spline_grid.hpp"
+#include "core/patch/spline_grid_patch.hpp"
 
 namespace pl {
 
-class NurbsPatch final : public PatchType<NurbsPatch> {
+class NurbsPatch final : public SplineGridPatch<NurbsPatch> {
  public:
   static constexpr const char* kType = "nurbs";  // the scene-format type name
   // Throws std::invalid_argument for invalid knots, counts, or non-positive weights.
@@ -22,26 +20,17 @@ class NurbsPatch final : public PatchType<NurbsPatch> {
   // Exact cylinder about the z axis: u around (9 points), v along z from z0 to z1 (linear).
   static NurbsPatch cylinder(Vec3 base_center, double radius, double height);
 
-  const Domain& domain() const override { return domain_; }
-  ControlPointKind kind(std::size_t k) const override;
   void basis(Vec2 x, std::span<Jet> out) const override;
   SurfaceJet evaluate(Vec2 x) const override;
   void influence(std::size_t k, std::span<const Vec2> xs, std::span<Jet> out) const override;
-  // Exact for single-span sides with equal weights (polynomial); otherwise the side's control
-  // polygon as a Bézier curve (same end points for clamped knots): the interface has no
-  // rational or piecewise curve.
-  std::vector<BezierCurve> boundary_curves() const override;
   // The side's NURBS curve (spline_boundary_point), exact for any knots and weights.
   Vec3 boundary_point(int side, double t) const override;
 
-  const SplineGrid& grid() const { return grid_; }
   const std::vector<double>& weights() const { return weights_; }
   NurbsPatch inserted_u(double t) const;  // same surface, knot t inserted (homogeneous Boehm)
 
  private:
-  SplineGrid grid_;
   std::vector<double> weights_;
-  UnitSquareDomain domain_;
 };
 
 }  // namespace pl

@@ -8,7 +8,7 @@
 #include "core/network/gb_face_free_points.hpp"
 #include "core/network/incremental_filling.hpp"
 #include "core/patch/control_net_topology.hpp"
-#include "core/patch/gb/gb_interior_patch.hpp"
+#include "core/patch/patch_types.hpp"
 
 namespace pl {
 
@@ -49,7 +49,7 @@ ScenePoints::Group& add_group(ScenePoints& s, SegmentSet& segments, const Patch&
                               const PointIndex* shared, const PointIndex* own = nullptr) {
   // A face with interior control draws its degree-d net (control_net_topology hides the rest).
   const ControlNetTopology t = control_net_topology(patch);
-  const auto* interior = dynamic_cast<const GBInteriorPatch*>(&patch);
+  const auto* interior = patch_as<GBInteriorPatch>(patch);
   ScenePoints::Group g;
   g.owner = owner;
   g.first = s.positions.size();
@@ -104,7 +104,7 @@ std::vector<FreePoint> face_free_points(const Scene& scene, const Patch& patch,
     return {};
   }
   // A face too concave for the central point's weight has none.
-  const auto* interior = dynamic_cast<const GBInteriorPatch*>(&patch);
+  const auto* interior = patch_as<GBInteriorPatch>(patch);
   if (interior && !interior->has_centre())
     std::erase_if(out, [](const FreePoint& p) { return p.name.centre; });
   return out;
