@@ -25,7 +25,7 @@ ImVec4 highlight() {
 void draw_filling(const SidePanel& p, const ContinuityMonitor::Filling& f, std::size_t index,
                   double threshold) {
   const SceneReport& report = f.report;
-  const std::vector<int> over = p.continuity.warnings(index, threshold);
+  const std::vector<int> over = p.model.continuity().warnings(index, threshold);
   if (!f.label.empty()) {
     ImGui::Separator();
     ImGui::TextUnformatted(f.label.c_str());
@@ -66,9 +66,9 @@ void draw_filling(const SidePanel& p, const ContinuityMonitor::Filling& f, std::
                       e.faces[0], e.faces[1], index);
         if (warn) ImGui::PushStyleColor(ImGuiCol_Text, highlight());
         const SelectionItem item = SelectionItem::edge(e.edge);
-        if (ImGui::Selectable(label, p.selection.contains(item),
+        if (ImGui::Selectable(label, p.model.selection().contains(item),
                               ImGuiSelectableFlags_SpanAllColumns))
-          p.selection.set({item});
+          p.model.selection().set({item});
         ImGui::TableNextColumn();
         ImGui::Text("%.2e", e.max_gap);
         ImGui::TableNextColumn();
@@ -89,7 +89,8 @@ void draw_filling(const SidePanel& p, const ContinuityMonitor::Filling& f, std::
       char label[64];
       std::snprintf(label, sizeof label, "  vertex %d: %.3g deg##pv%zu", v.vertex,
                     v.tangent_plane_deviation_deg, index);
-      if (ImGui::Selectable(label, p.selection.contains(item))) p.selection.set({item});
+      if (ImGui::Selectable(label, p.model.selection().contains(item)))
+        p.model.selection().set({item});
     }
   }
 }
@@ -101,9 +102,9 @@ namespace {
 // The joints of the free curves: which ends meet, the class and the figures (the same as
 // `patchlab analyze` reports); a row selects the two curves.
 void draw_curve_joints(const SidePanel& p) {
-  if (!p.curve_marks || p.curve_marks->joints().empty()) return;
-  const CurveMarks& marks = *p.curve_marks;
-  const std::vector<SceneCurve>& curves = p.doc.scene().curves;
+  const CurveMarks& marks = p.model.curve_marks();
+  if (marks.joints().empty()) return;
+  const std::vector<SceneCurve>& curves = p.model.doc().scene().curves;
   ImGui::Separator();
   ImGui::TextUnformatted("Curve joints");
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
@@ -126,9 +127,10 @@ void draw_curve_joints(const SidePanel& p) {
     const std::string label = joint_ends(j, curves) + "##joint" + std::to_string(i);
     const SelectionItem a = SelectionItem::curve(j.curves[0]),
                         b = SelectionItem::curve(j.curves[1]);
-    if (ImGui::Selectable(label.c_str(), p.selection.contains(a) && p.selection.contains(b),
+    if (ImGui::Selectable(label.c_str(),
+                          p.model.selection().contains(a) && p.model.selection().contains(b),
                           ImGuiSelectableFlags_SpanAllColumns))
-      p.selection.set({a, b});
+      p.model.selection().set({a, b});
     ImGui::TableNextColumn();
     ImGui::TextUnformatted(joint_class(j, marks.size()).c_str());
     ImGui::TableNextColumn();
@@ -144,14 +146,14 @@ void draw_curve_joints(const SidePanel& p) {
 }  // namespace
 
 void draw_continuity_section(const SidePanel& p) {
-  double& threshold = p.prefs.continuity_threshold_deg;
+  double& threshold = p.model.prefs().continuity_threshold_deg;
   ImGui::InputDouble("Warn above", &threshold, 0, 0, "%.3g deg");
   threshold = std::clamp(threshold, kMinContinuityThresholdDeg, kMaxContinuityThresholdDeg);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
         "An edge is a warning when the normals of its two faces differ by more\n"
         "than this anywhere along it (kept in the preferences)");
-  const auto& fillings = p.continuity.fillings();
+  const auto& fillings = p.model.continuity().fillings();
   for (std::size_t i = 0; i < fillings.size(); ++i) draw_filling(p, fillings[i], i, threshold);
   if (fillings.empty()) ImGui::TextDisabled("Waiting for the surfaces.");
   draw_curve_joints(p);

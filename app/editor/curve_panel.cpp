@@ -30,13 +30,13 @@ void run(const SidePanel& p, std::shared_ptr<Command> c) {
   if (p.tool_context)
     run_command(*p.tool_context, std::move(c));
   else
-    run_command(p.doc, {}, std::move(c));
+    run_command(p.model.doc(), {}, std::move(c));
 }
 
 }  // namespace
 
 void draw_curve_section(const SidePanel& p, int c, int point) {
-  const SceneCurve& curve = p.doc.scene().curves.at(c);
+  const SceneCurve& curve = p.model.doc().scene().curves.at(c);
   ImGui::Separator();
   ImGui::Text("%s", curve_name(curve, c).c_str());
   row("type", std::string(curve_type_name(curve.type)));

@@ -8,7 +8,7 @@
 namespace pl {
 
 bool draw_display_section(const SidePanel& p) {
-  DisplaySettings& d = p.prefs.display;
+  DisplaySettings& d = p.model.prefs().display;
   static const char* modes[] = {"Shaded", "Isophotes", "Zebra", "Curvature"};
   int base = static_cast<int>(d.base);
   ImGui::SetNextItemWidth(-1);
@@ -56,7 +56,7 @@ bool draw_display_section(const SidePanel& p) {
   ImGui::Checkbox("Curves", &d.network_curves);
   ImGui::Checkbox("Patch borders", &d.borders);
   ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.5f);
-  ImGui::Checkbox("Probe", &p.prefs.show_probe);
+  ImGui::Checkbox("Probe", &p.model.prefs().show_probe);
   ImGui::Checkbox("Curvature combs", &d.combs);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
@@ -82,12 +82,12 @@ bool draw_display_section(const SidePanel& p) {
                                       "150 %",          "175 %", "200 %"};
   int scale = 0;
   for (int i = 0; i < 6; ++i)
-    if (p.prefs.ui_scale == kScales[i]) scale = i;
-  if (ImGui::Combo("Interface", &scale, kScaleNames, 6)) p.prefs.ui_scale = kScales[scale];
-  int densities[2] = {p.prefs.coarse_density, p.prefs.fine_density};
+    if (p.model.prefs().ui_scale == kScales[i]) scale = i;
+  if (ImGui::Combo("Interface", &scale, kScaleNames, 6)) p.model.prefs().ui_scale = kScales[scale];
+  int densities[2] = {p.model.prefs().coarse_density, p.model.prefs().fine_density};
   if (ImGui::SliderInt2("Density", densities, 4, 96)) {
-    p.prefs.coarse_density = densities[0];
-    p.prefs.fine_density = densities[1];
+    p.model.prefs().coarse_density = densities[0];
+    p.model.prefs().fine_density = densities[1];
   }
   const bool rebuild = ImGui::IsItemDeactivatedAfterEdit();
   if (ImGui::IsItemHovered())

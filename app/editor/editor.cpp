@@ -121,10 +121,7 @@ void Editor::draw_interface(const ColorRange& range) {
   draw_menu_bar(m.actions());
   const EditorLayout l = m.layout();
   ToolContext tools = m.tool_context();
-  SidePanel panel{m.prefs(),   views,          m.doc(),        m.selection(),
-                  m.actions(), m.continuity(), m.work_plane(), m.tools(),
-                  range,       ui_scale_,      &tools,         &m.curve_marks(),
-                  {}};
+  SidePanel panel{m, range, ui_scale_, &tools, {}};
   if (debugging())
     panel.item_probe = [this](const std::string& label, float x0, float y0, float x1, float y1) {
       report_panel_item(label, x0, y0, x1, y1);
@@ -212,21 +209,10 @@ void Editor::frame() {
   ViewportFrame f;
   f.window = &window_;
   f.renderer = &renderer_;
-  f.views = &views;
-  f.doc = &model_.doc();
-  f.camera = &model_.nav().camera();
-  f.prefs = &model_.prefs();
-  f.selection = &model_.selection();
-  f.work_plane = &model_.work_plane();
-  f.continuity = &model_.continuity();
-  f.curve_marks = &model_.curve_marks();
+  f.model = &model_;
   f.viewport = l.viewport();
   f.panels = l.panels(views.panels());
-  f.hover_panel = model_.mouse().panel;
-  f.hover = &model_.mouse().under;
-  f.probe = &model_.mouse().probe;
   f.ui_scale = ui_scale_;
-  f.title = model_.session().title();
   const ColorRange range = views.colour_range(model_.prefs().display, model_.doc().revision());
   painter_.paint(f, range);
   draw_tool_feedback();

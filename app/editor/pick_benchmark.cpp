@@ -3,13 +3,13 @@
 #include <chrono>
 #include <cstdio>
 
-#include "render/draw_scene_builder.hpp"
 #include "app/document/scene_file.hpp"
 #include "app/editor/logic/preferences.hpp"
 #include "app/editor/logic/scene_picker.hpp"
 #include "app/editor/logic/surface_probe.hpp"
 #include "core/base/data_error.hpp"
 #include "core/network/sample_networks.hpp"
+#include "render/draw_scene_builder.hpp"
 
 namespace pl {
 

@@ -45,10 +45,10 @@ void scheme_row(const SidePanel& p) {
   ImGui::TextDisabled("scheme");
   ImGui::SameLine(ImGui::GetFontSize() * 6);
   for (const char* id : {"face.scheme.auto", "face.scheme.gregory", "face.scheme.gb"}) {
-    const Action* a = p.actions.find(id);
+    const Action* a = p.model.actions().find(id);
     if (!a) continue;
-    ImGui::BeginDisabled(!p.actions.is_enabled(*a));
-    if (ImGui::RadioButton(a->label.c_str(), a->checked && a->checked())) p.actions.run(id);
+    ImGui::BeginDisabled(!p.model.actions().is_enabled(*a));
+    if (ImGui::RadioButton(a->label.c_str(), a->checked && a->checked())) p.model.actions().run(id);
     ImGui::EndDisabled();
     ImGui::SameLine();
   }
@@ -59,8 +59,9 @@ void scheme_row(const SidePanel& p) {
   ImGui::SameLine(ImGui::GetFontSize() * 6);
   std::string current = "-";
   for (FaceScheme s : all_face_schemes())
-    if (const Action* a =
-            is_ribbon_scheme(s) ? p.actions.find("face.scheme." + scheme_keyword(s)) : nullptr;
+    if (const Action* a = is_ribbon_scheme(s)
+                              ? p.model.actions().find("face.scheme." + scheme_keyword(s))
+                              : nullptr;
         a && a->checked && a->checked())
       current = a->label;
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 11);
@@ -68,10 +69,11 @@ void scheme_row(const SidePanel& p) {
     for (FaceScheme s : all_face_schemes()) {
       if (!is_ribbon_scheme(s)) continue;
       const std::string id = "face.scheme." + scheme_keyword(s);
-      const Action* a = p.actions.find(id);
+      const Action* a = p.model.actions().find(id);
       if (!a) continue;
-      ImGui::BeginDisabled(!p.actions.is_enabled(*a));
-      if (ImGui::Selectable(a->label.c_str(), a->checked && a->checked())) p.actions.run(id);
+      ImGui::BeginDisabled(!p.model.actions().is_enabled(*a));
+      if (ImGui::Selectable(a->label.c_str(), a->checked && a->checked()))
+        p.model.actions().run(id);
       ImGui::EndDisabled();
     }
     ImGui::EndCombo();
@@ -83,7 +85,7 @@ void run(const SidePanel& p, std::shared_ptr<Command> c) {
   if (p.tool_context)
     run_command(*p.tool_context, std::move(c));
   else
-    run_command(p.doc, {}, std::move(c));
+    run_command(p.model.doc(), {}, std::move(c));
 }
 
 // An editable name: applied (one command) when the field is left or Enter pressed, and only
@@ -103,10 +105,10 @@ void name_field(const SidePanel& p, const std::string& name, const std::string& 
 
 // A button running action `id` (disabled when the action is), reported to scripts by `label`.
 void action_button(const SidePanel& p, const char* id, const char* label) {
-  const Action* a = p.actions.find(id);
+  const Action* a = p.model.actions().find(id);
   if (!a) return;
-  ImGui::BeginDisabled(!p.actions.is_enabled(*a));
-  if (ImGui::Button(label)) p.actions.run(id);
+  ImGui::BeginDisabled(!p.model.actions().is_enabled(*a));
+  if (ImGui::Button(label)) p.model.actions().run(id);
   ImGui::EndDisabled();
   if (p.item_probe) {
     const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
@@ -117,7 +119,7 @@ void action_button(const SidePanel& p, const char* id, const char* label) {
 // The interior of face `face`: a GB face's degree (raised and lowered by buttons), how many of
 // its free points are moved, Reset Interior; a Gregory face says why it has none.
 void interior_section(const SidePanel& p, int face) {
-  const std::optional<InteriorSummary> s = interior_summary(p.doc.scene(), face);
+  const std::optional<InteriorSummary> s = interior_summary(p.model.doc().scene(), face);
   if (!s) return;
   ImGui::Separator();
   if (!s->has_interior) {
@@ -173,16 +175,16 @@ void vertex_section(const SidePanel& p, const VertexProperties& v) {
   ImGui::TextDisabled("tangent");
   ImGui::SameLine(ImGui::GetFontSize() * 6);
   for (const char* id : {"network.plane_fitted", "network.plane_fixed"}) {
-    const Action* a = p.actions.find(id);
+    const Action* a = p.model.actions().find(id);
     if (!a) continue;
     const bool on = a->checked && a->checked();
-    ImGui::BeginDisabled(!on && !p.actions.is_enabled(*a));
-    if (ImGui::RadioButton(a->label.c_str(), on) && !on) p.actions.run(id);
+    ImGui::BeginDisabled(!on && !p.model.actions().is_enabled(*a));
+    if (ImGui::RadioButton(a->label.c_str(), on) && !on) p.model.actions().run(id);
     ImGui::EndDisabled();
     ImGui::SameLine();
   }
   ImGui::NewLine();
-  const auto plane = vertex_plane(*p.doc.scene().network, v.vertex);
+  const auto plane = vertex_plane(*p.model.doc().scene().network, v.vertex);
   if (!plane) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("no plane yet: it needs two edges that are not in line");
@@ -215,12 +217,12 @@ void patch_section(const PatchProperties& q) {
 // Where point r is: a free point as the views list it when they show the document as it is (the
 // document would rebuild its face's G1 data every frame), any other from the document.
 Vec3 position_of(const SidePanel& p, const PointRef& r) {
-  if (r.kind == PointRef::Kind::FreePoint && p.views.ready()) {
-    const LiveSurfaces& live = p.views.main()->shown();
-    if (live.synced_revision() == p.doc.revision())
+  if (r.kind == PointRef::Kind::FreePoint && p.model.views().ready()) {
+    const LiveSurfaces& live = p.model.views().main()->shown();
+    if (live.synced_revision() == p.model.doc().revision())
       if (const int i = live.points().find(r); i >= 0) return live.points().positions[i];
   }
-  return point_position(p.doc.scene(), r);
+  return point_position(p.model.doc().scene(), r);
 }
 
 // Typed coordinates of the selected points' centre: applied as one command when the field is
@@ -248,9 +250,9 @@ void coordinates(const SidePanel& p, const std::vector<PointRef>& points) {
 }  // namespace
 
 void draw_selection_section(const SidePanel& p) {
-  const Scene& scene = p.doc.scene();
+  const Scene& scene = p.model.doc().scene();
   std::vector<SelectionItem> present;
-  for (const SelectionItem& i : p.selection.items())
+  for (const SelectionItem& i : p.model.selection().items())
     if (item_exists(scene, i)) present.push_back(i);
   if (present.empty()) {
     ImGui::TextDisabled("Click a point, curve or surface to select it;");

@@ -27,7 +27,7 @@ bool draw_side_panel(const SidePanel& p, double top, double bottom) {
     rebuild = draw_display_section(p);
     // The comparison's panes are a choice of display: which schemes fill the network side by
     // side.
-    if (p.doc.scene().network) rebuild |= draw_comparison_section(p);
+    if (p.model.doc().scene().network) rebuild |= draw_comparison_section(p);
   }
   if (ImGui::CollapsingHeader("Work plane")) draw_work_plane_section(p);
   if (ImGui::CollapsingHeader("Continuity", ImGuiTreeNodeFlags_DefaultOpen))
@@ -40,7 +40,7 @@ bool draw_side_panel(const SidePanel& p, double top, double bottom) {
 void draw_tools_section(const SidePanel& p) {
   // One button per tool, from the Tools menu's actions (their keys and enabled state).
   bool first = true;
-  for (const ActionRegistry::Entry& e : p.actions.entries("Tools")) {
+  for (const ActionRegistry::Entry& e : p.model.actions().entries("Tools")) {
     if (!e.action) continue;
     const Action& a = *e.action;
     if (a.id == "tool.finish") continue;  // a command of the tools, not a tool
@@ -53,20 +53,20 @@ void draw_tools_section(const SidePanel& p) {
     first = false;
     const bool on = a.checked && a.checked();
     if (on) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-    if (ImGui::Button(a.label.c_str())) p.actions.run(a.id);
+    if (ImGui::Button(a.label.c_str())) p.model.actions().run(a.id);
     if (on) ImGui::PopStyleColor();
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("%s%s", a.help.c_str(),
                         a.keys.empty() ? "" : ("  (" + to_string(a.keys[0]) + ")").c_str());
   }
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-  ImGui::TextWrapped("%s", p.tools.active().hint().c_str());
+  ImGui::TextWrapped("%s", p.model.tools().active().hint().c_str());
   ImGui::PopStyleColor();
   draw_tool_options(p);
 }
 
 void draw_work_plane_section(const SidePanel& p) {
-  WorkPlane& w = p.work_plane;
+  WorkPlane& w = p.model.work_plane();
   ImGui::Checkbox("Show grid", &w.shown);
   int kind = static_cast<int>(w.kind);
   static const char* kinds[] = {"View", "XY", "XZ", "YZ"};
@@ -74,10 +74,10 @@ void draw_work_plane_section(const SidePanel& p) {
   double origin[3] = {w.origin.x, w.origin.y, w.origin.z};
   if (ImGui::InputScalarN("Through", ImGuiDataType_Double, origin, 3, nullptr, nullptr, "%.4g"))
     w.origin = Vec3(origin[0], origin[1], origin[2]);
-  if (p.actions.find("plane.at_selection")) {
-    const Action& a = *p.actions.find("plane.at_selection");
-    ImGui::BeginDisabled(!p.actions.is_enabled(a));
-    if (ImGui::Button("Through the selection")) p.actions.run(a.id);
+  if (p.model.actions().find("plane.at_selection")) {
+    const Action& a = *p.model.actions().find("plane.at_selection");
+    ImGui::BeginDisabled(!p.model.actions().is_enabled(a));
+    if (ImGui::Button("Through the selection")) p.model.actions().run(a.id);
     ImGui::EndDisabled();
   }
   ImGui::TextDisabled("New points are placed on this plane.");
@@ -86,10 +86,11 @@ void draw_work_plane_section(const SidePanel& p) {
 bool draw_comparison_section(const SidePanel& p) {
   ImGui::Separator();
   ImGui::TextUnformatted("Compare schemes");
-  const Action* compare = p.actions.find("view.compare");
-  bool on = p.views.compare();
-  if (compare && ImGui::Checkbox("Side by side  (C)", &on)) p.actions.run(compare->id);
-  CompareSetup setup = compare_setup_from(p.prefs.compare_schemes, p.prefs.compare_base);
+  const Action* compare = p.model.actions().find("view.compare");
+  bool on = p.model.views().compare();
+  if (compare && ImGui::Checkbox("Side by side  (C)", &on)) p.model.actions().run(compare->id);
+  CompareSetup setup =
+      compare_setup_from(p.model.prefs().compare_schemes, p.model.prefs().compare_base);
   const CompareSetup before = setup;
   // Panes and their schemes; a change re-evaluates the comparison (rebuild).
   int count = int(setup.schemes.size());
@@ -119,21 +120,21 @@ bool draw_comparison_section(const SidePanel& p) {
     ImGui::SetTooltip("The distance colouring and the table's distances are to this scheme");
   bool rebuild = false;
   if (!(setup == before)) {
-    p.prefs.compare_schemes = schemes_keywords(setup);
-    p.prefs.compare_base = scheme_keyword(setup.base);
+    p.model.prefs().compare_schemes = schemes_keywords(setup);
+    p.model.prefs().compare_base = scheme_keyword(setup.base);
     // A new base alone needs no evaluation: the panes stay, their distances follow.
     if (setup.schemes == before.schemes)
-      p.views.set_base(setup.base);
+      p.model.views().set_base(setup.base);
     else
-      rebuild = p.views.compare();
+      rebuild = p.model.views().compare();
   }
-  if (!p.views.compare()) return rebuild;
-  ImGui::Checkbox("Colour by distance to base  (D)", &p.views.difference);
-  if (p.views.difference)
+  if (!p.model.views().compare()) return rebuild;
+  ImGui::Checkbox("Colour by distance to base  (D)", &p.model.views().difference);
+  if (p.model.views().difference)
     ImGui::TextWrapped(
         "Signed distance of each sample to the nearest point of the base pane's "
         "tessellation; max |d| = %.3g",
-        p.views.difference_max());
+        p.model.views().difference_max());
   return rebuild;
 }
 

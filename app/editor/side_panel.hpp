@@ -1,35 +1,21 @@
 // The side panel: tools, selection inspector, display, work plane, comparison and continuity
-// sections, one function each, over the parts they show. Every change of the document goes
+// sections, one function each, over the editor model's parts. Every change of the document goes
 // through a command or an action; the sections only lay out widgets. ImGui code.
 #pragma once
 
 #include <functional>
 #include <string>
 
-#include "app/editor/logic/actions.hpp"
-#include "app/editor/logic/continuity_monitor.hpp"
-#include "app/editor/logic/curve_marks.hpp"
-#include "app/editor/logic/document_session.hpp"
-#include "app/editor/logic/preferences.hpp"
-#include "app/editor/logic/scene_views.hpp"
-#include "app/editor/logic/selection.hpp"
-#include "app/editor/logic/tool.hpp"
+#include "app/editor/logic/editor_model.hpp"
 
 namespace pl {
 
+// What the panel shows and edits: the editor model's parts, and what the window adds.
 struct SidePanel {
-  Preferences& prefs;
-  SceneViews& views;
-  Document& doc;
-  Selection& selection;
-  const ActionRegistry& actions;
-  const ContinuityMonitor& continuity;
-  WorkPlane& work_plane;
-  ToolBox& tools;
+  EditorModel& model;
   ColorRange range;  // the colour range shown (a "fixed range" starts from it)
   float ui_scale = 1;
-  ToolContext* tool_context = nullptr;      // what the active tool's options act through
-  const CurveMarks* curve_marks = nullptr;  // the joints of the free curves (Continuity)
+  ToolContext* tool_context = nullptr;  // what the active tool's options act through
   // Scripts (--debug-state): told where a panel button is (its label and window rectangle).
   std::function<void(const std::string&, float, float, float, float)> item_probe;
 };
@@ -51,7 +37,5 @@ void draw_work_plane_section(const SidePanel& p);
 // panes changed (the views must be rebuilt).
 bool draw_comparison_section(const SidePanel& p);
 void draw_continuity_section(const SidePanel& p);
-// Brings the Continuity figures up to the document once the views shown have settled: the
-// scene's own filling, or the comparison's two (continuity_panel.cpp).
 
 }  // namespace pl

@@ -51,7 +51,7 @@ void curve_options(NewCurveTool& tool, ToolContext& ctx) {
 void draw_tool_options(const SidePanel& p) {
   if (!p.tool_context) return;
   ToolContext& ctx = *p.tool_context;
-  Tool& tool = p.tools.active();
+  Tool& tool = p.model.tools().active();
   if (auto* t = dynamic_cast<AddVertexTool*>(&tool)) vertex_options(*t, ctx);
   if (auto* t = dynamic_cast<AddEdgeTool*>(&tool); t && t->from() >= 0)
     ImGui::Text("next edge from vertex %d", t->from());

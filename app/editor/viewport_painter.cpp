@@ -61,8 +61,8 @@ uint64_t item_key(const std::optional<SelectionItem>& item) {
 
 void ViewportPainter::update_guides(const ViewportFrame& f, int panel) {
   PanelGuides& g = guides_[panel];
-  const LiveSurfaces& live = f.views->panel(panel).shown();
-  const Scene& scene = f.doc->scene();
+  const LiveSurfaces& live = f.model->views().panel(panel).shown();
+  const Scene& scene = f.model->doc().scene();
   const auto& curves = live.draw().network_curves;
   const auto& free_curves = live.draw().free_curves;
   // Which face or patch each surface draws (built only when a highlight changes).
@@ -73,23 +73,23 @@ void ViewportPainter::update_guides(const ViewportFrame& f, int panel) {
   };
   const std::size_t surfaces = live.surfaces().surfaces.size();
 
-  const uint64_t selected_key = guide_key(live, f.selection->serial());
+  const uint64_t selected_key = guide_key(live, f.model->selection().serial());
   if (selected_key != g.selected_key) {
     g.selected_key = selected_key;
     std::vector<Vec3> lines;
-    std::vector<int> edges = f.selection->of_kind(SelectionItem::Kind::Edge);
-    const std::vector<int> faces = f.selection->of_kind(SelectionItem::Kind::Face);
+    std::vector<int> edges = f.model->selection().of_kind(SelectionItem::Kind::Edge);
+    const std::vector<int> faces = f.model->selection().of_kind(SelectionItem::Kind::Face);
     if (scene.network)
       for (const std::vector<int>& sides : face_edges(*scene.network, faces))
         edges.insert(edges.end(), sides.begin(), sides.end());
     for (int e : edges)
       if (e >= 0 && e < int(curves.size())) append_segments(curves[e], lines);
-    for (int c : f.selection->of_kind(SelectionItem::Kind::Curve))
+    for (int c : f.model->selection().of_kind(SelectionItem::Kind::Curve))
       if (c >= 0 && c < int(free_curves.size())) append_segments(free_curves[c], lines);
     if (!lines.empty() || !g.selected.empty()) g.selected.set(lines, {});
     g.selected_surfaces.clear();
     const std::set<int> faces_set(faces.begin(), faces.end());
-    const std::vector<int> patches = f.selection->of_kind(SelectionItem::Kind::Patch);
+    const std::vector<int> patches = f.model->selection().of_kind(SelectionItem::Kind::Patch);
     const std::set<int> patch_set(patches.begin(), patches.end());
     if (!faces_set.empty() || !patch_set.empty())
       for (std::size_t s = 0; s < surfaces; ++s) {
@@ -100,7 +100,7 @@ void ViewportPainter::update_guides(const ViewportFrame& f, int panel) {
   }
 
   const std::optional<SelectionItem> hovered =
-      panel == f.hover_panel && f.hover ? f.hover->item : std::nullopt;
+      panel == f.model->mouse().panel ? f.model->mouse().under.item : std::nullopt;
   const uint64_t hovered_key = guide_key(live, item_key(hovered));
   if (hovered_key != g.hovered_key) {
     g.hovered_key = hovered_key;
@@ -118,10 +118,10 @@ void ViewportPainter::update_guides(const ViewportFrame& f, int panel) {
     if (!lines.empty() || !g.hovered.empty()) g.hovered.set(lines, {});
   }
 
-  if (f.work_plane->shown) {
+  if (f.model->work_plane().shown) {
     // Sized to the view at the camera's target, centred where the target meets the plane.
-    const Camera& c = *f.camera;
-    const PlaneFrame plane = f.work_plane->frame(c);
+    const Camera& c = f.model->nav().camera();
+    const PlaneFrame plane = f.model->work_plane().frame(c);
     const double step = grid_step(2 * c.half_height(), kGridCellsPerView);
     // Within the clipping planes, which hug the scene (2 scene radii about the target).
     const int half_cells = std::clamp(int(1.8 * c.scene_radius / step), 1, kGridHalfCells);
@@ -130,7 +130,7 @@ void ViewportPainter::update_guides(const ViewportFrame& f, int panel) {
     const Vec2 centre = plane_coordinates(plane, c.target);
     // The plane's own axes through its origin (a view-aligned plane has none worth showing).
     std::vector<Vec3> u, v;
-    if (f.work_plane->kind != WorkPlaneKind::View) {
+    if (f.model->work_plane().kind != WorkPlaneKind::View) {
       u = {plane.origin + (centre.x - reach) * plane.u,
            plane.origin + (centre.x + reach) * plane.u};
       v = {plane.origin + (centre.y - reach) * plane.v,
@@ -158,16 +158,17 @@ void ViewportPainter::draw_panel_gl(const ViewportFrame& f, int panel, const Col
   glClear(GL_DEPTH_BUFFER_BIT);
   const SceneRenderer& renderer = *f.renderer;
   renderer.draw_backdrop(v);
-  const Camera& camera = *f.camera;
-  const GpuScene& gpu = gpu_of(f.views->panel(panel).copy());
-  const ViewCopy* difference_copy = f.views->difference_scene(f.doc->revision(), panel);
+  const Camera& camera = f.model->nav().camera();
+  const GpuScene& gpu = gpu_of(f.model->views().panel(panel).copy());
+  const ViewCopy* difference_copy =
+      f.model->views().difference_scene(f.model->doc().revision(), panel);
   const GpuScene* difference = difference_copy ? &gpu_of(*difference_copy) : nullptr;
   if (difference) {
     DisplaySettings d = display;
     d.base = BaseMode::Curvature;
     d.curvature = CurvatureKind::Mean;  // the field that holds the distance
     d.curvature_lighting = true;
-    const double m = f.views->difference_range();
+    const double m = f.model->views().difference_range();
     renderer.draw(*difference, camera, d, {-m, m}, v);
   } else {
     renderer.draw(gpu, camera, display, range, v);
@@ -183,9 +184,9 @@ void ViewportPainter::draw_panel_gl(const ViewportFrame& f, int panel, const Col
     const int one[1] = {g.hovered_surface};
     renderer.draw_tint(drawn, one, camera, kHoverTint, v);
   }
-  if (f.work_plane->shown) {
+  if (f.model->work_plane().shown) {
     renderer.draw_guides(g.grid, camera, kGridLine, 1.0f, true, v);
-    const PlaneFrame plane = f.work_plane->frame(camera);
+    const PlaneFrame plane = f.model->work_plane().frame(camera);
     renderer.draw_guides(g.axis_u, camera, axis_colour(plane.u), 1.6f, true, v);
     renderer.draw_guides(g.axis_v, camera, axis_colour(plane.v), 1.6f, true, v);
   }
@@ -206,13 +207,13 @@ void ViewportPainter::draw_progress(const ViewportFrame& f) {
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoFocusOnAppearing |
                    ImGuiWindowFlags_NoNav);
-  const std::string& name = f.title;
+  const std::string& name = f.model->session().title();
   ImGui::TextUnformatted(("Opening " + name).c_str());
-  const double fraction = f.views->load_fraction();
+  const double fraction = f.model->views().load_fraction();
   char overlay[96];
   std::snprintf(overlay, sizeof overlay, "%.0f %%", 100 * fraction);
   ImGui::ProgressBar(float(fraction), ImVec2(-1, 0), overlay);
-  ImGui::TextDisabled("%s ...", f.views->load_stage().c_str());
+  ImGui::TextDisabled("%s ...", f.model->views().load_stage().c_str());
   ImGui::End();
 }
 
@@ -223,41 +224,42 @@ void ViewportPainter::paint(const ViewportFrame& f, const ColorRange& range) {
   glClearColor(0.155f, 0.160f, 0.175f, 1.0f);
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  if (f.views->loading()) {
+  if (f.model->views().loading()) {
     draw_progress(f);
     return;
   }
-  if (!f.views->ready()) {
-    draw_error_text(f.viewport, "Cannot show this scene:\n" + f.views->error());
+  if (!f.model->views().ready()) {
+    draw_error_text(f.viewport, "Cannot show this scene:\n" + f.model->views().error());
     return;
   }
   // One comb scale for side-by-side panels, as one colour range.
   std::vector<const GpuScene*> scenes;
-  for (int i = 0; i < f.views->panels(); ++i) scenes.push_back(&gpu_of(f.views->panel(i).copy()));
-  const DisplaySettings display = common_comb_length(f.prefs->display, scenes);
-  for (int i = 0; i < f.views->panels(); ++i) draw_panel_gl(f, i, range, display);
+  for (int i = 0; i < f.model->views().panels(); ++i)
+    scenes.push_back(&gpu_of(f.model->views().panel(i).copy()));
+  const DisplaySettings display = common_comb_length(f.model->prefs().display, scenes);
+  for (int i = 0; i < f.model->views().panels(); ++i) draw_panel_gl(f, i, range, display);
 
-  for (int i = 0; i < f.views->panels(); ++i) {
+  for (int i = 0; i < f.model->views().panels(); ++i) {
     OverlayFrame o{f.panels[i],
-                   *f.camera,
-                   f.views->panel(i).shown(),
-                   *f.prefs,
-                   *f.selection,
-                   f.continuity,
-                   i == f.hover_panel ? f.hover : nullptr,
-                   f.probe,
+                   f.model->nav().camera(),
+                   f.model->views().panel(i).shown(),
+                   f.model->prefs(),
+                   f.model->selection(),
+                   &f.model->continuity(),
+                   i == f.model->mouse().panel ? &f.model->mouse().under : nullptr,
+                   &f.model->mouse().probe,
                    f.ui_scale,
                    i,
-                   f.curve_marks};
+                   &f.model->curve_marks()};
     draw_curve_marks(o);
     draw_point_overlays(o);
-    if (f.views->panels() > 1) {
-      const CompareSetup& setup = f.views->setup();
+    if (f.model->views().panels() > 1) {
+      const CompareSetup& setup = f.model->views().setup();
       draw_panel_label(
           o,
           compare_pane_title(
-              setup.schemes[i], i == setup.base_pane(), f.views->showing_difference(), setup.base,
-              o.rect.width - 24 * f.ui_scale,
+              setup.schemes[i], i == setup.base_pane(), f.model->views().showing_difference(),
+              setup.base, o.rect.width - 24 * f.ui_scale,
               [](const std::string& t) { return double(ImGui::CalcTextSize(t.c_str()).x); }),
           f.viewport);
     }

@@ -13,14 +13,7 @@
 #include <vector>
 
 #include "app/editor/gl_window.hpp"
-#include "app/editor/logic/continuity_monitor.hpp"
-#include "app/editor/logic/curve_marks.hpp"
-#include "app/editor/logic/preferences.hpp"
-#include "app/editor/logic/scene_picker.hpp"
-#include "app/editor/logic/scene_views.hpp"
-#include "app/editor/logic/selection.hpp"
-#include "app/editor/logic/surface_probe.hpp"
-#include "app/editor/logic/work_plane.hpp"
+#include "app/editor/logic/editor_model.hpp"
 #include "render/scene_renderer.hpp"
 
 namespace pl {
@@ -29,21 +22,10 @@ namespace pl {
 struct ViewportFrame {
   const GlWindow* window = nullptr;
   const SceneRenderer* renderer = nullptr;
-  SceneViews* views = nullptr;
-  const Document* doc = nullptr;
-  const Camera* camera = nullptr;
-  const Preferences* prefs = nullptr;
-  const Selection* selection = nullptr;
-  const WorkPlane* work_plane = nullptr;
-  const ContinuityMonitor* continuity = nullptr;
-  const CurveMarks* curve_marks = nullptr;
-  ViewRect viewport;                  // the whole 3D area
-  std::vector<ViewRect> panels;       // one per view panel
-  int hover_panel = -1;               // panel under the cursor
-  const PickResult* hover = nullptr;  // what lies under the cursor there
-  const std::optional<ProbeHit>* probe = nullptr;
+  EditorModel* model = nullptr;  // what is drawn: the views, the selection, the hover, ...
+  ViewRect viewport;             // the whole 3D area
+  std::vector<ViewRect> panels;  // one per view panel
   float ui_scale = 1;
-  std::string title;  // the document's name, for the progress panel
 };
 
 class ViewportPainter {
