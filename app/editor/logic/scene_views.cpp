@@ -22,7 +22,7 @@ void SceneViews::rebuild(const Document& doc, const Preferences& prefs, bool com
   compare_error_.clear();
   fields_.clear();
   difference_copies_.clear();
-  range_key_ = {};
+  range_.invalidate();
   compare_ = false;
   if (worker_.valid()) abandoned_.push_back(std::move(worker_));  // its result is dropped
   std::erase_if(abandoned_, [](const std::future<void>& f) {
@@ -163,15 +163,14 @@ const EvaluatedView& SceneViews::panel(int i) const {
 
 ColorRange SceneViews::colour_range(const DisplaySettings& d, uint64_t revision) {
   if (d.range) return *d.range;
-  if (!main_ || d.base != BaseMode::Curvature) return range_;
+  if (!main_ || d.base != BaseMode::Curvature) return range_value_;
   const RangeKey key{revision, settled(), panels(), d.curvature, d.range_percentile};
-  if (key == range_key_) return range_;
-  range_key_ = key;
+  if (!range_.require(key)) return range_value_;
   std::vector<const SurfaceMesh*> meshes;
   for (int i = 0; i < panels(); ++i)
     for (const SurfaceMesh& m : panel(i).shown().draw().surfaces) meshes.push_back(&m);
-  range_ = automatic_range(meshes, d.curvature, d.range_percentile);
-  return range_;
+  range_value_ = automatic_range(meshes, d.curvature, d.range_percentile);
+  return range_value_;
 }
 
 const ViewCopy* SceneViews::difference_scene(uint64_t revision, int panel) {

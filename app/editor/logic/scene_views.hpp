@@ -128,15 +128,17 @@ class SceneViews {
   std::string error_, compare_error_;
   double last_eval_ms_ = 0;
   std::vector<DifferenceField> fields_;  // one per pane (the base pane's stays empty)
+  // The automatic curvature range: of the surfaces shown at this key.
   struct RangeKey {
-    uint64_t revision = UINT64_MAX;
+    uint64_t revision = 0;
     bool settled = false;
     int panels = 1;
     CurvatureKind kind = CurvatureKind::Mean;
     double percentile = 0;
     bool operator==(const RangeKey&) const = default;
-  } range_key_;
-  ColorRange range_{-1, 1};
+  };
+  DerivedFrom<RangeKey> range_;
+  ColorRange range_value_{-1, 1};
   ViewCopyFactory copies_;
   std::vector<std::unique_ptr<ViewCopy>> difference_copies_;  // one per pane
 };
