@@ -133,6 +133,9 @@ void Editor::draw_interface(const ColorRange& range) {
   figures.selected = m.selection().size();
   figures.tool = m.tools().active().name();
   if (views.ready()) figures.drawing = views.panel(0).drawing_note();
+  // First: what a moving view gave up is the news (the rest of the line may be cut).
+  if (const std::string note = m.draw_budget().note(); !note.empty())
+    figures.drawing = note + (figures.drawing.empty() ? "" : "; ") + figures.drawing;
   const EditorModel::Mouse& mouse = m.mouse();
   if (mouse.under.item) figures.under = describe(*mouse.under.item);
   if (m.work_plane().shown && mouse.panel >= 0) {
@@ -232,7 +235,9 @@ void Editor::frame() {
     release.reset();
   }
   // The work of a frame, not the idle wait for input before it.
-  model_.status().add_frame(std::chrono::duration<double, std::milli>(now - start).count());
+  const double frame_ms = std::chrono::duration<double, std::milli>(now - start).count();
+  model_.status().add_frame(frame_ms);
+  model_.draw_budget().frame(frame_ms, model_.moving());
   ++frames_;
   ready_frames_ = views.ready() ? ready_frames_ + 1 : 0;
   // Report only once the layout is final (ImGui hides new windows on their first frame).

@@ -153,6 +153,21 @@ void ViewportPainter::draw_panel_gl(const ViewportFrame& f, int panel, const Col
   v.width = std::max(1, int(std::lround(r.width * sx)));
   v.height = std::max(1, int(std::lround(r.height * sx)));
   v.pixel_scale = sx * f.ui_scale;
+  // While something moves and full-resolution frames would not hold the frame rate, the view is
+  // drawn smaller and stretched onto the window (logic/draw_budget.hpp).
+  const Viewport window_rect = v;
+  const double scale = f.model->draw_budget().scale();
+  bool reduced = false;
+  if (scale < 1) {
+    v = {0, 0, std::max(1, int(std::lround(v.width * scale))),
+         std::max(1, int(std::lround(v.height * scale))), v.pixel_scale * scale};
+    try {
+      reduced_.bind(v.width, v.height);
+      reduced = true;
+    } catch (const std::exception&) {
+      v = window_rect;  // the driver refused it: full resolution, as at rest
+    }
+  }
   glEnable(GL_SCISSOR_TEST);
   glScissor(v.x, v.y, v.width, v.height);
   glClear(GL_DEPTH_BUFFER_BIT);
@@ -192,6 +207,11 @@ void ViewportPainter::draw_panel_gl(const ViewportFrame& f, int panel, const Col
   }
   renderer.draw_guides(g.selected, camera, kSelectedLine, 3.5f, true, v);
   renderer.draw_guides(g.hovered, camera, kHoverLine, 3.0f, false, v);
+  if (reduced) {
+    const Viewport& w = window_rect;
+    glScissor(w.x, w.y, w.width, w.height);
+    reduced_.blit_to_window(w.x, w.y, w.width, w.height);
+  }
   glDisable(GL_SCISSOR_TEST);
 }
 

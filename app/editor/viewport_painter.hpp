@@ -14,6 +14,7 @@
 
 #include "app/editor/gl_window.hpp"
 #include "app/editor/logic/editor_model.hpp"
+#include "render/reduced_target.hpp"
 #include "render/scene_renderer.hpp"
 
 namespace pl {
@@ -47,6 +48,7 @@ class ViewportPainter {
   void draw_panel_gl(const ViewportFrame& f, int panel, const ColorRange& range,
                      const DisplaySettings& display);
   std::array<PanelGuides, kMaxComparePanes> guides_;
+  ReducedTarget reduced_;  // the view drawn smaller while moving (draw budget)
 };
 
 }  // namespace pl

@@ -241,8 +241,8 @@ void EditorModel::frame_shown() {
   nav_.frame_tightly(shown_scenes(), layout().panels(views_.panels())[0].aspect());
 }
 
-bool EditorModel::animating() const {
-  return release_time_ || session_.doc().dragging() || mouse_.tool_has_it ||
+bool EditorModel::moving() const {
+  return session_.doc().dragging() || mouse_.tool_has_it ||
          nav_.gesture() != ViewNavigator::Gesture::None;
 }
 

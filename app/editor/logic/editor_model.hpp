@@ -28,6 +28,7 @@
 #include "app/editor/logic/continuity_monitor.hpp"
 #include "app/editor/logic/curve_marks.hpp"
 #include "app/editor/logic/document_session.hpp"
+#include "app/editor/logic/draw_budget.hpp"
 #include "app/editor/logic/editor_layout.hpp"
 #include "app/editor/logic/editor_shell.hpp"
 #include "app/editor/logic/preferences.hpp"
@@ -148,6 +149,9 @@ class EditorModel {
   CompareFigures& figures() { return figures_; }
   const CadExportJob& cad_job() const { return cad_job_; }
   const Mouse& mouse() const { return mouse_; }
+  // The resolution the 3D view is drawn at while something moves; the window reports each
+  // frame's time to it.
+  DrawBudget& draw_budget() { return draw_budget_; }
   const WindowMetrics& metrics() const { return metrics_; }
 
   EditorLayout layout() const;
@@ -167,8 +171,10 @@ class EditorModel {
   uint64_t context_serial() const { return context_serial_; }
   void close_context() { context_.reset(); }
 
-  // A press, a drag or a gesture is under way (the loop should not sleep).
-  bool animating() const;
+  // A drag, a tool holding the pointer or a camera gesture is under way.
+  bool moving() const;
+  // ... or the fine surfaces are awaited after a release (the loop should not sleep).
+  bool animating() const { return moving() || release_time_.has_value(); }
   // The time of the last release, until the fine surfaces are shown (settle time).
   std::optional<Clock::time_point>& release_time() { return release_time_; }
   // The first time the evaluated scene was taken (for launch figures), if it was.
@@ -231,6 +237,7 @@ class EditorModel {
   CadExportJob cad_job_;
   CompareFigures figures_;
   Mouse mouse_;
+  DrawBudget draw_budget_;
   std::optional<ContextTarget> context_;  // the right-click menu is open on this
   uint64_t context_serial_ = 0;
   std::optional<Clock::time_point> release_time_;  // waiting for the fine surfaces
