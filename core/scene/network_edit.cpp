@@ -295,7 +295,8 @@ Split split_edge(Network& n, int e, double t, std::optional<Vec3> normal) {
   const NetworkEdge ed = n.edges[e];
   const int a = ed.v[0], b = ed.v[1];
   std::vector<int> faces;
-  for (const EdgeUse& u : edge_uses(n, EdgeIndex(n))[e]) faces.push_back(u.face);
+  const auto uses = edge_uses(n, EdgeIndex(n));
+  for (const EdgeUse& u : uses[e]) faces.push_back(u.face);
   if (!faces.empty() && !normal)
     throw EditRefused("the new vertex of a split edge that borders a face needs a normal");
   if (normal && !(glm::length(*normal) > 0 && std::isfinite(glm::length(*normal))))
