@@ -120,7 +120,7 @@ std::vector<Vec3> framing_points(std::span<const DrawScene* const> scenes,
   for (const DrawScene* d : scenes) {
     for (const SurfaceMesh& m : d->surfaces)
       for (const Vec3& p : m.positions)
-        if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) points.push_back(p);
+        if (finite(p)) points.push_back(p);
     points.insert(points.end(), d->net.points.begin(), d->net.points.end());
     for (const Arrow& a : d->arrows) {
       points.push_back(a.base);

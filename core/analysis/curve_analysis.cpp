@@ -130,10 +130,6 @@ struct SampleFigures {
   int inflections = 0;
 };
 
-bool finite(const Vec3& v) {
-  return std::isfinite(v.x + v.y + v.z);
-}
-
 // The samples at per_span per span; `bad(t)` is called at the first one whose position,
 // derivatives or curvature are not finite (it may throw). The figures are taken only if asked.
 template <class Bad>
@@ -321,8 +317,6 @@ std::vector<JointReport> curve_joints(std::span<const SceneCurve> curves) {
   // wider than tol keeps two ends tol apart in neighbouring cells despite the rounding of the
   // division.
   const double cell = tol > 0 ? tol * (1 + 1e-6) : 1.0;
-  // An end that is not finite meets no other (its figures would be NaN).
-  auto finite = [](const Vec3& p) { return std::isfinite(p.x + p.y + p.z); };
   using Cell = std::array<std::int64_t, 3>;
   auto cell_of = [&](const Vec3& p) {
     Cell k{};
@@ -342,6 +336,7 @@ std::vector<JointReport> curve_joints(std::span<const SceneCurve> curves) {
   };
   std::vector<Placed> placed;
   placed.reserve(ends.size());
+  // An end that is not finite meets no other (its figures would be NaN).
   for (std::size_t i = 0; i < ends.size(); ++i)
     if (finite(ends[i].p.p)) placed.push_back({cell_of(ends[i].p.p), ends[i].p.p, i});
   std::sort(placed.begin(), placed.end(), [](const Placed& a, const Placed& b) {

@@ -14,6 +14,7 @@
 #include "core/eval/scene_evaluation.hpp"
 #include "core/patch/gb/shared_basis.hpp"
 #include "core/scene/network_edit.hpp"
+#include "core/scene/surface_names.hpp"
 
 namespace pl {
 
@@ -97,11 +98,6 @@ SchemeFigures figures_of(const Scene& scene, const SceneSurfaces& ss, int index,
 
 }  // namespace
 
-std::string face_display_name(const Network& network, int face) {
-  const std::string& name = network.faces.at(face).name;
-  return name.empty() ? "face" + std::to_string(face) : name;
-}
-
 SchemeComparison compare_schemes(const Scene& scene, const ComparisonOptions& o,
                                  const std::string& source) {
   if (!scene.network || scene.network->faces.empty())
@@ -128,7 +124,7 @@ SchemeComparison compare_schemes(const Scene& scene, const ComparisonOptions& o,
   for (int face : faces) {
     FaceFigures ff;
     ff.face = face;
-    ff.name = face_display_name(net, face);
+    ff.name = face_surface_name(net, face);
     ff.sides = int(net.faces[face].loop.size());
     const FaceScheme own = net.faces[face].scheme;
     // Fills the face with `scheme`; returns why it cannot be, or "".

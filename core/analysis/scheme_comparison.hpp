@@ -73,9 +73,6 @@ struct ComparisonCancelled : std::runtime_error {
 SchemeComparison compare_schemes(const Scene& scene, const ComparisonOptions& options,
                                  const std::string& source);
 
-// The face's name as the comparison prints it.
-std::string face_display_name(const Network& network, int face);
-
 // The `compare --json` object and the table of the text output (docs/cli.md).
 std::string comparison_to_json(const SchemeComparison& comparison);
 std::string comparison_to_text(const SchemeComparison& comparison);

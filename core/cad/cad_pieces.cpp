@@ -4,10 +4,11 @@
 
 #include "core/base/data_error.hpp"
 #include "core/cad/exact_surfaces.hpp"
-#include "core/network/network_filling.hpp"
+#include "core/network/scene_parts.hpp"
 #include "core/patch/exact_boundary.hpp"
 #include "core/patch/gb/shared_basis.hpp"
 #include "core/patch/patch_types.hpp"
+#include "core/scene/surface_names.hpp"
 
 namespace pl {
 
@@ -85,7 +86,7 @@ void add_split_pieces(const std::shared_ptr<const Patch>& patch, const std::stri
   for (std::size_t k = 0; k < quads.size(); ++k) {
     CadPiece piece;
     piece.owner = owner;
-    piece.name = quads.size() == 1 ? owner : owner + "." + std::to_string(k);
+    piece.name = piece_name(owner, quads.size(), k);
     piece.patch = patch;
     piece.quad = quads[k];
     piece.degree = degree;
@@ -180,25 +181,20 @@ void add_patch_pieces(const std::shared_ptr<const Patch>& patch, const std::stri
 std::vector<CadPiece> cad_pieces(const Scene& scene, std::optional<FaceScheme> scheme,
                                  const std::string& source) {
   std::vector<CadPiece> out;
-  if (scene.network) {
-    const NetworkTopology topo = validate_network(*scene.network, source);
-    const NetworkFilling filling = fill_network(*scene.network, topo, scheme, source);
-    for (const FacePatch& fp : filling.faces) {
-      const auto& face = scene.network->faces[fp.face];
-      const std::string name = face.name.empty() ? "face" + std::to_string(fp.face) : face.name;
-      try {
-        add_patch_pieces(fp.patch, name, out);
-      } catch (const std::invalid_argument& e) {
-        throw DataError(source, "network.faces[" + std::to_string(fp.face) + "]",
-                        std::string("cannot export: ") + e.what());
-      }
+  const SceneParts parts = scene_parts(scene, scheme, source);
+  for (std::size_t i = 0; i < parts.filling.faces.size(); ++i) {
+    const FacePatch& fp = parts.filling.faces[i];
+    try {
+      add_patch_pieces(fp.patch, parts.face_names[i], out);
+    } catch (const std::invalid_argument& e) {
+      throw DataError(source, "network.faces[" + std::to_string(fp.face) + "]",
+                      std::string("cannot export: ") + e.what());
     }
   }
   for (std::size_t i = 0; i < scene.patches.size(); ++i) {
-    const ScenePatch& sp = scene.patches[i];
-    const std::string name = sp.name.empty() ? "patch" + std::to_string(i) : sp.name;
     try {
-      add_patch_pieces(std::shared_ptr<const Patch>(sp.patch->clone()), name, out);
+      add_patch_pieces(std::shared_ptr<const Patch>(scene.patches[i].patch->clone()),
+                       parts.patch_names[i], out);
     } catch (const std::invalid_argument& e) {
       throw DataError(source, "patches[" + std::to_string(i) + "]",
                       std::string("cannot export: ") + e.what());

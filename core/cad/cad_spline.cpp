@@ -211,8 +211,7 @@ void validate_cad_surface(const CadSurface& s) {
   if (s.points.size() != s.nu * s.nv)
     throw std::invalid_argument("surface: point count does not match the knots");
   for (const Vec3& p : s.points)
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      throw std::invalid_argument("surface: a control point is not finite");
+    if (!finite(p)) throw std::invalid_argument("surface: a control point is not finite");
   if (!s.weights.empty()) {
     if (s.weights.size() != s.points.size())
       throw std::invalid_argument("surface: weight count does not match the points");

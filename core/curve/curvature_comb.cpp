@@ -33,7 +33,7 @@ Vec3 curvature_tooth(const CurvePoint& c) {
   // subtraction leaves rounding noise of random direction: that is zero curvature, not a tooth.
   if (glm::length(across) <= kRoundingLevel * glm::length(c.d2)) return Vec3(0);
   const Vec3 tooth = -across / speed2;
-  if (!std::isfinite(tooth.x) || !std::isfinite(tooth.y) || !std::isfinite(tooth.z))
+  if (!finite(tooth))
     return Vec3(0);  // |C'| so small that the quotient overflows: no meaningful curvature
   return tooth;
 }

@@ -1,4 +1,4 @@
-// A curve of a scene: one of the lecture's types as the file states it (so that it is written
+// A curve of a scene: one of the classic curve types as the file states it (so that it is written
 // back as it was read), its exact B-spline form for every operation, and its own evaluation.
 #pragma once
 

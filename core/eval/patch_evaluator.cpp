@@ -60,10 +60,7 @@ PatchEvaluator::~PatchEvaluator() {
 }
 
 namespace {
-bool finite(const Vec3& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-bool finite(const SurfaceJet& j) {
+bool jet_finite(const SurfaceJet& j) {
   return finite(j.p) && finite(j.su) && finite(j.sv) && finite(j.suu) && finite(j.suv) &&
          finite(j.svv);
 }
@@ -73,7 +70,7 @@ bool PatchEvaluator::finite(std::size_t i) const {
   const SurfaceGeometry& g = geometry_[i];
   const bool geometry = pl::finite(g.normal) && std::isfinite(g.gaussian) &&
                         std::isfinite(g.mean) && std::isfinite(g.kmin) && std::isfinite(g.kmax);
-  if (!jets_.empty()) return geometry && pl::finite(jets_[i]);
+  if (!jets_.empty()) return geometry && jet_finite(jets_[i]);
   return geometry && !std::binary_search(nonfinite_.begin(), nonfinite_.end(), uint32_t(i));
 }
 
@@ -84,7 +81,7 @@ void PatchEvaluator::store_compact(std::span<const SurfaceJet> jets, std::size_t
     const std::size_t i = first + j;
     positions_[i] = jets[j].p;
     if (geometry_[i].status == GeometryStatus::Singular) geometry_[i] = singular_limit(i);
-    if (!pl::finite(jets[j])) {  // rare: a lock is cheaper than per-task lists
+    if (!jet_finite(jets[j])) {  // rare: a lock is cheaper than per-task lists
       static std::mutex nonfinite_mutex;
       const std::lock_guard lock(nonfinite_mutex);
       nonfinite_.push_back(static_cast<uint32_t>(i));

@@ -5,19 +5,11 @@
 #include <stdexcept>
 
 #include "core/patch/patch_types.hpp"
+#include "core/scene/surface_names.hpp"
 
 namespace pl {
 
 namespace {
-
-std::string face_name(const Network& net, int f) {
-  const std::string& name = net.faces[f].name;
-  return name.empty() ? "face" + std::to_string(f) : name;
-}
-
-std::string piece_name(const std::string& patch_name, std::size_t pieces, std::size_t k) {
-  return pieces == 1 ? patch_name : patch_name + "." + std::to_string(k);
-}
 
 // Moves the evaluator's patch onto `target` point by point; false if the structure differs (a
 // different type, point count or domain cannot be followed point by point).
@@ -112,7 +104,7 @@ void SceneEvaluation::sync_faces(const FillingUpdate& up, std::vector<SceneSurfa
       SceneSurface s = std::move(old.at(from));
       s.face = f;
       s.patch_side = filling_.patch_side(f);
-      const std::string name = face_name(net, f);
+      const std::string name = face_surface_name(net, f);
       bool changed = from != f || s.name != name;
       s.name = name;
       if (std::binary_search(up.interior_edited.begin(), up.interior_edited.end(), f))
@@ -126,7 +118,7 @@ void SceneEvaluation::sync_faces(const FillingUpdate& up, std::vector<SceneSurfa
     SceneSurface s;
     const bool same_face = !up.renumbered && f < static_cast<int>(old.size()) && old[f].face == f;
     if (same_face) s = std::move(old[f]);
-    s.name = face_name(net, f);
+    s.name = face_surface_name(net, f);
     s.face = f;
     s.patch = -1;
     s.patch_side = fp.patch_side;
@@ -189,7 +181,7 @@ void SceneEvaluation::sync_patches(const Scene& scene, std::vector<SceneSurface>
   std::vector<PatchSource> sources;
   for (std::size_t i = 0; i < scene.patches.size(); ++i) {
     const ScenePatch& sp = scene.patches[i];
-    const std::string name = sp.name.empty() ? "patch" + std::to_string(i) : sp.name;
+    const std::string name = patch_surface_name(scene, i);
     const bool had = i < patch_sources_.size();
     const std::size_t old_first = old_index, old_count = had ? patch_sources_[i].surfaces : 0;
     old_index += old_count;

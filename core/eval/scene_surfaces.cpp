@@ -3,7 +3,9 @@
 #include <optional>
 
 #include "core/base/parallel_for.hpp"
+#include "core/network/scene_parts.hpp"
 #include "core/patch/gb/shared_basis.hpp"
+#include "core/scene/surface_names.hpp"
 
 namespace pl {
 
@@ -11,9 +13,9 @@ SceneSurfaces evaluate_scene(const Scene& scene, int density, std::optional<Face
                              TessellationCache& cache, const std::string& source,
                              const std::shared_ptr<SampleBufferPool>& pool) {
   SceneSurfaces out;
-  if (scene.network) {
-    const NetworkTopology topo = validate_network(*scene.network, source);
-    NetworkFilling filling = fill_network(*scene.network, topo, scheme, source);
+  SceneParts parts = scene_parts(scene, scheme, source);
+  if (parts.topology) {
+    NetworkFilling& filling = parts.filling;
     out.projected_vertices = std::move(filling.projected_vertices);
     // Faces evaluated side by side over the cores (each evaluation also splits its samples): a
     // network of many small faces is not a queue of small parallel loops.
@@ -24,23 +26,21 @@ SceneSurfaces evaluate_scene(const Scene& scene, int density, std::optional<Face
       if (alone) own.emplace();
       FacePatch& fp = filling.faces[i];
       SceneSurface& s = out.surfaces[i];
-      const auto& face = scene.network->faces[fp.face];
-      s.name = face.name.empty() ? "face" + std::to_string(fp.face) : face.name;
+      s.name = std::move(parts.face_names[i]);
       s.face = fp.face;
       s.patch_side = fp.patch_side;
       auto tess = cache.get(fp.patch->domain(), density);
       s.evaluator = std::make_unique<PatchEvaluator>(std::move(fp.patch), std::move(tess),
                                                      SampleStorage::Jets, pool);
     });
-    out.shared_edges = shared_edges_of(topo, out.surfaces);
+    out.shared_edges = shared_edges_of(*parts.topology, out.surfaces);
   }
   for (std::size_t i = 0; i < scene.patches.size(); ++i) {
     const ScenePatch& sp = scene.patches[i];
-    const std::string name = sp.name.empty() ? "patch" + std::to_string(i) : sp.name;
     const auto pieces = surface_pieces_of(*sp.patch);
     for (std::size_t k = 0; k < pieces.size(); ++k) {
       SceneSurface s;
-      s.name = pieces.size() == 1 ? name : name + "." + std::to_string(k);
+      s.name = piece_name(parts.patch_names[i], pieces.size(), k);
       s.patch = static_cast<int>(i);
       auto tess = cache.get(pieces[k]->domain(), density);
       s.evaluator =

@@ -1,6 +1,7 @@
-// The cubic blending functions of the seed's classic curves, with first and second derivatives:
+// The cubic blending functions of the classic curve types, with first and second derivatives:
 // the interpolating basis b(t) = M_I^T [1 t t^2 t^3]^T (through 4 points at t = 0, 1/3, 2/3, 1)
-// and the Hermite (Ferguson) basis [alpha0 alpha1 beta0 beta1].
+// and the Hermite basis [alpha0 alpha1 beta0 beta1] (J. Ferguson, "Multivariable curve
+// interpolation", J. ACM 11(2), 1964).
 #pragma once
 
 #include <array>

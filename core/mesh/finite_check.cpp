@@ -13,10 +13,6 @@ namespace {
 // Samples per task of the evaluator check: a few tens of microseconds of reading.
 constexpr std::size_t kCheckGrain = 16384;
 
-bool finite(const Vec3& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 // What is wrong with one sample, or nullptr.
 const char* fault(const Vec3& p, const Vec3& n, double gaussian, double mean, double kmin,
                   double kmax) {

@@ -25,16 +25,15 @@ Network cube_sphere_network(int k, FaceScheme scheme) {
   // Grid points in integer cube coordinates (2i - k for i = 0..k), so points shared by cube
   // sides are found exactly.
   std::map<std::array<int, 3>, int> vertex_of;
-  std::map<std::pair<int, int>, int> edge_of;
+  EdgeIndex edge_of;
   const auto vertex = [&](const std::array<int, 3>& c) {
     const auto [it, added] = vertex_of.emplace(c, int(net.vertices.size()));
     if (added) net.vertices.push_back(glm::normalize(Vec3(c[0], c[1], c[2])));
     return it->second;
   };
   const auto edge = [&](int a, int b) {
-    const auto key = std::minmax(a, b);
-    if (edge_of.emplace(key, int(net.edges.size())).second)
-      net.edges.push_back(sphere_edge(net.vertices, a, b));
+    const int e = int(net.edges.size());
+    if (edge_of.add(a, b, e) == e) net.edges.push_back(sphere_edge(net.vertices, a, b));
   };
   // Each cube side: its outward axis and two in-plane axes with a x b = outward.
   struct Side {
@@ -60,7 +59,8 @@ Network cube_sphere_network(int k, FaceScheme scheme) {
         const std::vector<int> loop{at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)};
         for (int m = 0; m < 4; ++m) edge(loop[m], loop[(m + 1) % 4]);
         net.faces.push_back(
-            {loop, scheme, std::string(s.name) + "." + std::to_string(i) + "." + std::to_string(j)});
+            {loop, scheme,
+             std::string(s.name) + "." + std::to_string(i) + "." + std::to_string(j)});
       }
   }
   return net;

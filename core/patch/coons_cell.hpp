@@ -1,10 +1,11 @@
-// One bicubically blended Coons cell of a curve network with non-uniform parameter spacing
-// (Coons surfaces on a non-rectangular network; docs/classic-types.md).
+// One bicubically blended Coons cell (S. A. Coons, "Surfaces for computer-aided design of space
+// forms", MIT MAC-TR-41, 1967) of a curve network with non-uniform parameter spacing (Coons
+// surfaces on a non-rectangular network; docs/classic-types.md).
 //
 // The network gives at each node r, r_s, r_t, r_st with respect to the network's own curve
 // parameters s (along rows) and t (along columns). The cell's opposite boundaries may have
 // different parametric lengths: S0 (bottom, v = 0) and S1 (top, v = 1) in s, T0 (left, u = 0)
-// and T1 (right, u = 1) in t. As in the seed, each boundary is the cubic Hermite curve of its
+// and T1 (right, u = 1) in t. Each boundary is the cubic Hermite curve of its
 // own length:  r(i, v) = r(i,0) a0(v) + r(i,1) a1(v) + [r_t(i,0) b0(v) + r_t(i,1) b1(v)] T_i.
 // Cross-boundary derivatives (u = i; v = j symmetric):
 //   r_u(i, v) = S(v) r_s(i, v) + lambda_i(v) r_v(i, v),

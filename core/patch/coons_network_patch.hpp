@@ -6,8 +6,8 @@
 // q = 0: r, 1: r_s, 2: r_t, 3: r_st. Parameters: s[j][i] is node (i, j)'s s on row j and
 // t[i][j] its t on column i; each row and column may be spaced differently, so opposite cell
 // boundaries have different parametric lengths (a non-rectangular network). Lengths::Equal is
-// the classic construction the seed warns about: every boundary gets the same length (the mean
-// spacing of its direction), which causes flat spots and wiggles on unequal spacing.
+// the common simplification: every boundary gets the same length (the mean spacing of its
+// direction), which causes flat spots and wiggles on unequal spacing.
 #pragma once
 
 #include "core/patch/coons_cell.hpp"

@@ -1,7 +1,6 @@
 #include "core/scene/network.hpp"
 
 #include <algorithm>
-#include <map>
 #include <set>
 
 #include "core/base/data_error.hpp"
@@ -11,6 +10,31 @@ namespace pl {
 BezierCurve Network::edge_curve(int e) const {
   const NetworkEdge& ed = edges.at(e);
   return BezierCurve({vertices.at(ed.v[0]), ed.handles[0], ed.handles[1], vertices.at(ed.v[1])});
+}
+
+EdgeIndex::EdgeIndex(const Network& net) {
+  for (std::size_t e = 0; e < net.edges.size(); ++e)
+    add(net.edges[e].v[0], net.edges[e].v[1], static_cast<int>(e));
+}
+
+int EdgeIndex::add(int a, int b, int e) {
+  return by_ends_.emplace(std::minmax(a, b), e).first->second;
+}
+
+int EdgeIndex::find(int a, int b) const {
+  const auto it = by_ends_.find(std::minmax(a, b));
+  return it == by_ends_.end() ? -1 : it->second;
+}
+
+std::vector<std::vector<EdgeUse>> edge_uses(const Network& net, const EdgeIndex& index) {
+  std::vector<std::vector<EdgeUse>> uses(net.edges.size());
+  for (std::size_t f = 0; f < net.faces.size(); ++f) {
+    const auto& loop = net.faces[f].loop;
+    for (std::size_t i = 0; i < loop.size(); ++i)
+      if (const int e = index.find(loop[i], loop[(i + 1) % loop.size()]); e >= 0)
+        uses[e].push_back({static_cast<int>(f), static_cast<int>(i)});
+  }
+  return uses;
 }
 
 NetworkTopology validate_network(const Network& net, const std::string& source) {
@@ -24,7 +48,7 @@ NetworkTopology validate_network(const Network& net, const std::string& source) 
   NetworkTopology topo;
   topo.vertex_edges.resize(nv);
   topo.edge_faces.resize(net.edges.size());
-  std::map<std::pair<int, int>, int> edge_of;  // unordered vertex pair -> edge
+  EdgeIndex edge_of;
   for (std::size_t e = 0; e < net.edges.size(); ++e) {
     const auto& ed = net.edges[e];
     const std::string path = "edges[" + std::to_string(e) + "].v";
@@ -34,10 +58,12 @@ NetworkTopology validate_network(const Network& net, const std::string& source) 
                                                        " does not exist (" + std::to_string(nv) +
                                                        " vertices)");
     if (ed.v[0] == ed.v[1]) fail(path, "an edge must join two different vertices");
-    const auto key = std::minmax(ed.v[0], ed.v[1]);
-    if (auto [it, fresh] = edge_of.emplace(key, static_cast<int>(e)); !fresh)
+    if (const int other = edge_of.add(ed.v[0], ed.v[1], static_cast<int>(e));
+        other != static_cast<int>(e)) {
+      const auto key = std::minmax(ed.v[0], ed.v[1]);
       fail(path, "vertices " + std::to_string(key.first) + " and " + std::to_string(key.second) +
-                     " are already joined by edge " + std::to_string(it->second));
+                     " are already joined by edge " + std::to_string(other));
+    }
     topo.vertex_edges[ed.v[0]].push_back(static_cast<int>(e));
     topo.vertex_edges[ed.v[1]].push_back(static_cast<int>(e));
   }
@@ -58,11 +84,10 @@ NetworkTopology validate_network(const Network& net, const std::string& source) 
     std::vector<FaceSide> sides(n);
     for (int i = 0; i < n; ++i) {
       const int a = loop[i], b = loop[(i + 1) % n];
-      auto it = edge_of.find(std::minmax(a, b));
-      if (it == edge_of.end())
+      const int e = edge_of.find(a, b);
+      if (e < 0)
         fail(path + "[" + std::to_string(i) + "]",
              "no edge joins vertices " + std::to_string(a) + " and " + std::to_string(b));
-      const int e = it->second;
       sides[i] = {e, net.edges[e].v[0] != a};
       auto& uses = topo.edge_faces[e];
       if (uses.size() == 2)

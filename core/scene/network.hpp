@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -87,6 +88,28 @@ struct NetworkTopology {
   std::vector<std::vector<EdgeUse>> edge_faces;   // [edge]: 0, 1 or 2 uses
   std::vector<std::vector<int>> vertex_edges;     // [vertex]: incident edges
 };
+
+// The network's adjacency: which edge joins two vertices, whichever way round. The one rule by
+// which a face loop's consecutive vertices name its edges; validate_network, the authoring edits
+// (network_edit.hpp) and the sample networks all look edges up here.
+class EdgeIndex {
+ public:
+  EdgeIndex() = default;
+  // Every edge of the network; of edges joining the same pair (an invalid network) the first.
+  explicit EdgeIndex(const Network& network);
+  // Records edge e joining a and b; returns the edge that already joined them, or e.
+  int add(int a, int b, int e);
+  // The edge joining a and b, or -1.
+  int find(int a, int b) const;
+
+ private:
+  std::map<std::pair<int, int>, int> by_ends_;  // unordered vertex pair (smaller first) -> edge
+};
+
+// Every use of every edge by a face side, [edge] -> uses in face then side order (a valid network
+// has at most two per edge; an invalid one may have more). Sides whose vertices no edge joins are
+// left out.
+std::vector<std::vector<EdgeUse>> edge_uses(const Network& network, const EdgeIndex& index);
 
 // Checks the rules of scene-format.md (vertex indices, loops, one edge per consecutive pair,
 // shared edges traversed in opposite directions, at most two faces per edge). Throws DataError

@@ -33,32 +33,13 @@ std::pair<int, int> key(int a, int b) {
   return std::minmax(a, b);
 }
 
-// Every edge by its unordered vertex pair.
-std::map<std::pair<int, int>, int> edges_by_ends(const Network& n) {
-  std::map<std::pair<int, int>, int> out;
-  for (std::size_t e = 0; e < n.edges.size(); ++e)
-    out.emplace(key(n.edges[e].v[0], n.edges[e].v[1]), int(e));
-  return out;
+// The vertices a face side runs from and to (the direction the face runs its edge).
+int use_from(const Network& n, const EdgeUse& u) {
+  return n.faces[u.face].loop[u.side];
 }
-
-struct Use {
-  int face;
-  int from, to;  // the direction the face runs the edge
-};
-
-// The faces using each edge (of a valid network), with their direction.
-std::vector<std::vector<Use>> edge_uses(const Network& n) {
-  const auto by_ends = edges_by_ends(n);
-  std::vector<std::vector<Use>> uses(n.edges.size());
-  for (std::size_t f = 0; f < n.faces.size(); ++f) {
-    const auto& loop = n.faces[f].loop;
-    for (std::size_t i = 0; i < loop.size(); ++i) {
-      const int a = loop[i], b = loop[(i + 1) % loop.size()];
-      if (auto it = by_ends.find(key(a, b)); it != by_ends.end())
-        uses[it->second].push_back({int(f), a, b});
-    }
-  }
-  return uses;
+int use_to(const Network& n, const EdgeUse& u) {
+  const auto& loop = n.faces[u.face].loop;
+  return loop[(u.side + 1) % loop.size()];
 }
 
 Vec3 newell_normal(const Network& n, std::span<const int> loop) {
@@ -77,13 +58,13 @@ std::vector<int> reversed_loop(const std::vector<int>& loop) {
 }  // namespace
 
 int add_vertex(Network& n, const Vec3& p) {
-  if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-    throw EditRefused("a vertex position must be finite");
+  if (!finite(p)) throw EditRefused("a vertex position must be finite");
   n.vertices.push_back(p);
   if (!n.normals.empty()) n.normals.emplace_back();
   return int(n.vertices.size()) - 1;
 }
 
+// One lookup: a scan of the edges costs less than building an EdgeIndex.
 int edge_between(const Network& n, int a, int b) {
   for (std::size_t e = 0; e < n.edges.size(); ++e)
     if (key(n.edges[e].v[0], n.edges[e].v[1]) == key(a, b)) return int(e);
@@ -99,8 +80,7 @@ int add_edge(Network& n, int a, int b, const std::array<Vec3, 2>& handles) {
     throw EditRefused("vertices " + str(a) + " and " + str(b) + " are already joined by edge " +
                       str(e));
   for (const Vec3& h : handles)
-    if (!std::isfinite(h.x) || !std::isfinite(h.y) || !std::isfinite(h.z))
-      throw EditRefused("edge handles must be finite");
+    if (!finite(h)) throw EditRefused("edge handles must be finite");
   n.edges.push_back({{a, b}, handles, ""});
   return int(n.edges.size()) - 1;
 }
@@ -136,11 +116,11 @@ std::vector<int> loop_of_edges(const Network& n, std::span<const int> edges) {
 }
 
 std::vector<std::array<int, 2>> missing_loop_edges(const Network& n, std::span<const int> loop) {
-  const auto by_ends = edges_by_ends(n);
+  const EdgeIndex by_ends(n);
   std::vector<std::array<int, 2>> out;
   for (std::size_t i = 0; i < loop.size(); ++i) {
     const int a = loop[i], b = loop[(i + 1) % loop.size()];
-    if (a != b && !by_ends.count(key(a, b))) out.push_back({a, b});
+    if (a != b && by_ends.find(a, b) < 0) out.push_back({a, b});
   }
   return out;
 }
@@ -155,17 +135,17 @@ std::vector<int> oriented_face_loop(const Network& n, std::vector<int> loop,
     if (!distinct.insert(v).second)
       throw EditRefused("vertex " + str(v) + " appears twice in the face's loop");
   }
-  const auto by_ends = edges_by_ends(n);
+  const EdgeIndex by_ends(n);
   std::vector<int> loop_edges;
   for (int i = 0; i < sides; ++i) {
     const int a = loop[i], b = loop[(i + 1) % sides];
-    auto it = by_ends.find(key(a, b));
-    if (it == by_ends.end())
+    const int e = by_ends.find(a, b);
+    if (e < 0)
       throw EditRefused("the loop is not closed by edges: no edge joins vertices " + str(a) +
                         " and " + str(b));
-    loop_edges.push_back(it->second);
+    loop_edges.push_back(e);
   }
-  const auto uses = edge_uses(n);
+  const auto uses = edge_uses(n, by_ends);
   for (std::size_t f = 0; f < n.faces.size(); ++f) {
     const auto& other = n.faces[f].loop;
     if (other.size() == loop.size() && std::set<int>(other.begin(), other.end()) == distinct)
@@ -179,7 +159,7 @@ std::vector<int> oriented_face_loop(const Network& n, std::vector<int> loop,
     if (u.size() >= 2)
       throw EditRefused("edge " + str(e) + " already joins faces " + str(u[0].face) + " and " +
                         str(u[1].face) + "; an edge can border at most two faces");
-    if (u.size() == 1) (u[0].from == loop[i] ? reverse_from : keep_from) = u[0].face;
+    if (u.size() == 1) (use_from(n, u[0]) == loop[i] ? reverse_from : keep_from) = u[0].face;
   }
   if (keep_from >= 0 && reverse_from >= 0)
     throw EditRefused("faces " + str(keep_from) + " and " + str(reverse_from) +
@@ -199,11 +179,11 @@ int add_face(Network& n, std::vector<int> loop, std::optional<Vec3> towards) {
 }
 
 std::vector<std::vector<int>> boundary_loops(const Network& n) {
-  const auto uses = edge_uses(n);
+  const auto uses = edge_uses(n, EdgeIndex(n));
   // The directed boundary edges a filling face runs: against the one face using the edge.
   std::map<int, std::vector<int>> next;  // vertex -> vertices a filling face may run to
   for (const auto& u : uses)
-    if (u.size() == 1) next[u[0].to].push_back(u[0].from);
+    if (u.size() == 1) next[use_to(n, u[0])].push_back(use_from(n, u[0]));
   std::set<std::pair<int, int>> used;
   std::vector<std::vector<int>> loops;
   for (const auto& [start, targets] : next) {
@@ -265,12 +245,12 @@ Removed delete_elements(Network& n, std::span<const int> vertices, std::span<con
   for (int f : faces) check_face(n, f), fdel[f] = true;
   for (std::size_t e = 0; e < n.edges.size(); ++e)
     if (vdel[n.edges[e].v[0]] || vdel[n.edges[e].v[1]]) edel[e] = true;
-  const auto by_ends = edges_by_ends(n);
+  const EdgeIndex by_ends(n);
   for (std::size_t f = 0; f < n.faces.size(); ++f) {
     const auto& loop = n.faces[f].loop;
     for (std::size_t i = 0; i < loop.size() && !fdel[f]; ++i) {
-      const auto it = by_ends.find(key(loop[i], loop[(i + 1) % loop.size()]));
-      fdel[f] = vdel[loop[i]] || (it != by_ends.end() && edel[it->second]);
+      const int e = by_ends.find(loop[i], loop[(i + 1) % loop.size()]);
+      fdel[f] = vdel[loop[i]] || (e >= 0 && edel[e]);
     }
   }
   Removed removed;
@@ -315,11 +295,8 @@ Split split_edge(Network& n, int e, double t, std::optional<Vec3> normal) {
   const NetworkEdge ed = n.edges[e];
   const int a = ed.v[0], b = ed.v[1];
   std::vector<int> faces;
-  for (std::size_t f = 0; f < n.faces.size(); ++f) {
-    const auto& loop = n.faces[f].loop;
-    for (std::size_t i = 0; i < loop.size(); ++i)
-      if (key(loop[i], loop[(i + 1) % loop.size()]) == key(a, b)) faces.push_back(int(f));
-  }
+  const auto uses = edge_uses(n, EdgeIndex(n));
+  for (const EdgeUse& u : uses[e]) faces.push_back(u.face);
   if (!faces.empty() && !normal)
     throw EditRefused("the new vertex of a split edge that borders a face needs a normal");
   if (normal && !(glm::length(*normal) > 0 && std::isfinite(glm::length(*normal))))

@@ -21,17 +21,6 @@ struct Net {
 
 }  // namespace
 
-std::size_t gb_net_index(int n, int d, int i, int j, int k) {
-  // Shared corner blocks: a point outside the stored range k..d-1-k of its row is stored by a
-  // neighbouring side, where it falls inside the range (one step suffices).
-  if (j < k) return gb_net_index(n, d, i - 1, d - k, j);
-  if (j > d - 1 - k) return gb_net_index(n, d, i + 1, k, d - j);
-  std::size_t offset = 1;
-  for (int r = 0; r < k; ++r) offset += static_cast<std::size_t>(n) * (d - 2 * r);
-  const int wrapped = ((i % n) + n) % n;
-  return offset + static_cast<std::size_t>(wrapped) * (d - 2 * k) + (j - k);
-}
-
 int gb_ring(int n, int d, std::size_t k) {
   if (k == 0) return -1;
   std::size_t first = 1;

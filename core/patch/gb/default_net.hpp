@@ -47,10 +47,6 @@
 
 namespace pl {
 
-// The .gbp stored index of P^i_{j,k} (any j in 0..d, k in 0..l-1, i taken modulo n) of a net of
-// n sides and degree d, without building a patch (so for any n, also beyond GBPatch::kMaxSides).
-std::size_t gb_net_index(int sides, int degree, int i, int j, int k);
-
 // The rules below on a plain net in .gbp order (GBPatch::point_count(n, d) points, any n >= 3):
 // every point with !placed[k] is moved to its default position. Throws like gb_default_net.
 std::vector<Vec3> gb_default_points(int sides, int degree, std::vector<Vec3> points,

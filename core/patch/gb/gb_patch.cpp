@@ -93,15 +93,20 @@ void GBPatch::set_control_point(std::size_t k, const Vec3& p) {
   update_rows(k);
 }
 
+std::size_t gb_net_index(int n, int d, int i, int j, int k) {
+  // Shared corner blocks: a point outside the stored range k..d-1-k of its row is stored by a
+  // neighbouring side (docs/gbp-format.md), where it falls inside the range (one step suffices).
+  if (j < k) return gb_net_index(n, d, i - 1, d - k, j);
+  if (j > d - 1 - k) return gb_net_index(n, d, i + 1, k, d - j);
+  std::size_t offset = 1;
+  for (int r = 0; r < k; ++r) offset += static_cast<std::size_t>(n) * (d - 2 * r);
+  const int wrapped = ((i % n) + n) % n;
+  return offset + static_cast<std::size_t>(wrapped) * (d - 2 * k) + (j - k);
+}
+
 std::size_t GBPatch::index(int i, int j, int k) const {
   assert(0 <= j && j <= d_ && 0 <= k && k < l_);
-  // Shared corner blocks: a point outside the stored range k..d-1-k of its row is stored by a
-  // neighbouring side (docs/gbp-format.md), where it falls inside the range.
-  if (j < k) return index(i - 1, d_ - k, j);
-  if (j > d_ - 1 - k) return index(i + 1, k, d_ - j);
-  std::size_t offset = 1;
-  for (int r = 0; r < k; ++r) offset += static_cast<std::size_t>(n_) * (d_ - 2 * r);
-  return offset + static_cast<std::size_t>(params_.wrap(i)) * (d_ - 2 * k) + (j - k);
+  return gb_net_index(n_, d_, i, j, k);
 }
 
 ControlPointKind GBPatch::kind(std::size_t k) const {

@@ -36,6 +36,11 @@
 
 namespace pl {
 
+// The .gbp stored index of P^i_{j,k} (any j in 0..d, k in 0..l-1, i taken modulo n) of a net of
+// n sides and degree d: the one rule of the .gbp point order, for a patch (GBPatch::index) and
+// for a plain net without one (so for any n, also beyond GBPatch::kMaxSides).
+std::size_t gb_net_index(int sides, int degree, int i, int j, int k);
+
 class GBPatch final : public PatchType<GBPatch> {
  public:
   static constexpr int kMaxSides = WachspressParameters::kMaxSides;
@@ -68,7 +73,7 @@ class GBPatch final : public PatchType<GBPatch> {
   int layers() const { return l_; }
   const ConvexPolygonDomain& polygon() const { return domain_; }
   const WachspressParameters& parameters() const { return params_; }
-  // Stored index of P^i_{j,k} for any j in 0..d, k in 0..l-1 (i taken modulo n).
+  // Stored index of P^i_{j,k} for any j in 0..d, k in 0..l-1 (i taken modulo n): gb_net_index.
   std::size_t index(int i, int j, int k) const;
   const Vec3& point(int i, int j, int k) const { return points_[index(i, j, k)]; }
   // The weight rule of grid position (j, k) (central_mu); the same for every ribbon.

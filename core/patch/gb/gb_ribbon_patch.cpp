@@ -50,8 +50,7 @@ GBRibbonPatch::GBRibbonPatch(ConcavePolygonDomain domain,
     layers_.push_back(static_cast<int>(r.size()));
     for (const auto& row : r)
       for (const Vec3& p : row)
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-          throw std::invalid_argument(which + " has a non-finite control point");
+        if (!finite(p)) throw std::invalid_argument(which + " has a non-finite control point");
   }
   for (int i = 0; i < n; ++i) {
     const Vec3 a = ribbons[i][0].back(), b = ribbons[(i + 1) % n][0].front();
