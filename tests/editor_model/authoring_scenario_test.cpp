@@ -44,31 +44,12 @@ const double kPoints[10][2] = {{0, 0},  {1, 0},  {1.3, 0.9}, {0.5, 1.5},  {-0.3,
                                {1, -1}, {0, -1}, {2.1, 0.3}, {-1.1, 1.0}, {-1.0, -0.1}};
 constexpr double kScale = 0.75;
 
-class TempDir {
- public:
-  TempDir() {
-    path_ = fs::temp_directory_path() /
-            ("patchlab-editor-model-" +
-             std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "-" +
-             std::to_string(reinterpret_cast<std::uintptr_t>(this)));
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
-
 }  // namespace
 
 TEST(AuthoringScenario, EndsAtTheEndToEndTestsFileByteForByte) {
   ModelDriver d(1200, 760);
   EditorModel& m = d.model();
-  TempDir dir;
+  TempDir dir("authoring");
   const fs::path saved = dir.path() / "built.json";
 
   // File > New, then the orthographic view, where window pixels map to the work plane affinely.

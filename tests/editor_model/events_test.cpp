@@ -3,7 +3,6 @@
 // right-click on empty space (the menu for nothing), a dropped file (asked about unsaved work
 // first, then opened) and the autosave of unsaved work (written, and gone after a save).
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 
@@ -22,24 +21,6 @@ DocumentSession default_scene_session() {
   session.open(kDefaultScene);
   return session;
 }
-
-class TempDir {
- public:
-  explicit TempDir(const std::string& name)
-      : path_(fs::temp_directory_path() /
-              ("patchlab-editor-model-" + name + "-" + std::to_string(::getpid()))) {
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
 
 Vec3 vertex_position(EditorModel& m, int v) {
   return m.doc().scene().network->vertices.at(v);
@@ -105,8 +86,7 @@ TEST(Events, ARightClickOnEmptySpaceOpensTheMenuForNothing) {
 TEST(Events, ADroppedFileAsksAboutUnsavedWorkThenOpens) {
   ModelDriver d(1280, 720);
   EditorModel& m = d.model();
-  d.key("Ctrl+N");
-  d.key("5");
+  d.new_scene();
   d.key("V");
   d.click(d.world_to_pixel(Vec3(0.2, 0.1, 0)));
   ASSERT_TRUE(m.doc().dirty());
@@ -135,8 +115,7 @@ TEST(Events, UnsavedWorkIsAutosavedAndASaveDeletesIt) {
   options.autosave_dir = state.path();
   ModelDriver d(1280, 720, DocumentSession(), options);
   EditorModel& m = d.model();
-  d.key("Ctrl+N");
-  d.key("5");
+  d.new_scene();
   d.key("V");
   d.click(d.world_to_pixel(Vec3(0.3, -0.2, 0)));
   ASSERT_TRUE(m.doc().dirty());

@@ -1,6 +1,7 @@
 #include "model_driver.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <cmath>
@@ -33,6 +34,18 @@ double printed_value(double v) {
 }
 
 }  // namespace
+
+TempDir::TempDir(const std::string& name)
+    : path_(std::filesystem::temp_directory_path() /
+            ("patchlab-editor-model-" + name + "-" + std::to_string(::getpid()))) {
+  std::filesystem::remove_all(path_);
+  std::filesystem::create_directories(path_);
+}
+
+TempDir::~TempDir() {
+  std::error_code ec;
+  std::filesystem::remove_all(path_, ec);
+}
 
 Vec2 whole_pixel(const Vec2& p) {
   return Vec2(std::nearbyint(p.x), std::nearbyint(p.y));  // the default mode: half to even
@@ -82,6 +95,11 @@ void ModelDriver::key(const std::string& name) {
   ASSERT_TRUE(chord) << name;
   model_->key(*chord);
   settle();
+}
+
+void ModelDriver::new_scene() {
+  key("Ctrl+N");
+  key("5");
 }
 
 void ModelDriver::move(const Vec2& pixel) {

@@ -61,6 +61,9 @@ class ModelDriver {
   void settle();
   // A key chord by its name ("Ctrl+S", "Enter", "V"), then the model at rest.
   void key(const std::string& chord);
+  // File > New, then the orthographic view (where pixels map to the work plane affinely), as
+  // the end-to-end driver's new_scene().
+  void new_scene();
   // The pointer goes to whole pixels, as a real pointer does.
   void move(const Vec2& pixel);
   // Button 0 left, 1 right, 2 middle: moved there first (a frame of hover), then pressed.
@@ -85,6 +88,19 @@ class ModelDriver {
   ScriptedShell shell_;
   std::unique_ptr<EditorModel> model_;
   PointerInput pointer_;
+};
+
+// A folder of its own for a test's files (named after `name` and the process), removed after.
+class TempDir {
+ public:
+  explicit TempDir(const std::string& name);
+  ~TempDir();
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
 };
 
 // A pixel as a click lands on it: the end-to-end driver rounds (half to even) to whole pixels.
