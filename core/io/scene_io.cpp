@@ -96,7 +96,7 @@ Network read_network(const JsonNode& node) {
       }
       const Vec3 v = n.point();
       if (glm::length(v) == 0) n.fail("a normal must not be the zero vector");
-      net.normals.emplace_back(glm::normalize(v));
+      net.normals.emplace_back(stored_normal(v));  // as the editor stores them: a fixed point
     }
   }
   if (auto edges = node.find("edges"))

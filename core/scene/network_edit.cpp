@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <tuple>
 
 namespace pl {
 
@@ -370,10 +371,21 @@ void set_vertex_normal(Network& n, int v, std::optional<Vec3> normal) {
 }
 
 Vec3 stored_normal(const Vec3& normal) {
+  // Normalising again changes a unit vector in its last bits at most, and soon no more: either a
+  // fixed point, or a short cycle of vectors that normalise into each other. Of a cycle the
+  // smallest (lexicographically) is taken, so that the result is the same from every vector of
+  // the cycle: the reader (which calls this too) maps a stored normal to itself.
   Vec3 n = glm::normalize(normal);
-  for (int i = 0; i < 8; ++i) {
+  std::vector<Vec3> seen{n};
+  for (int i = 0; i < 16; ++i) {
     const Vec3 again = glm::normalize(n);
-    if (again == n) break;
+    if (again == n) return n;
+    const auto cycle = std::find(seen.begin(), seen.end(), again);
+    if (cycle != seen.end())
+      return *std::min_element(cycle, seen.end(), [](const Vec3& a, const Vec3& b) {
+        return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+      });
+    seen.push_back(again);
     n = again;
   }
   return n;

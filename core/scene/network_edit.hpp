@@ -95,9 +95,10 @@ void set_edge_name(Network& network, int edge, std::string name);
 // or non-finite normal.
 void set_vertex_normal(Network& network, int v, std::optional<Vec3> normal);
 
-// `normal` made unit length the way the scene reader makes a file's normals (glm::normalize),
-// repeated until that changes it no more: stored like this, a normal survives save and open bit
-// for bit. normal must be finite and non-zero.
+// `normal` made unit length as the scene reader makes a file's normals: glm::normalize repeated
+// until that changes it no more (or, where a few vectors normalise into each other in a cycle,
+// the smallest of them). A normal stored like this survives save and open bit for bit. normal
+// must be finite and non-zero.
 Vec3 stored_normal(const Vec3& normal);
 
 // The name of a scheme as the file and the interface spell it ("auto", "gregory", "gb",
