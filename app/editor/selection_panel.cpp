@@ -13,6 +13,7 @@
 #include "app/editor/logic/interior_actions.hpp"
 #include "app/editor/logic/plane_handles.hpp"
 #include "app/editor/logic/selection_properties.hpp"
+#include "app/editor/logic/transform_selection.hpp"
 #include "app/editor/side_panel.hpp"
 #include "core/scene/network_edit.hpp"
 
@@ -293,6 +294,10 @@ void draw_selection_section(const SidePanel& p) {
       draw_curve_section(p, points[0].object, points[0].index);
     if (points.size() == 1 && points[0].kind == PointRef::Kind::FreePoint)
       interior_section(p, points[0].object);
+  }
+  if (!transform_points(scene, p.model.selection()).empty()) {
+    ImGui::Separator();
+    draw_transform_section(p);
   }
 }
 

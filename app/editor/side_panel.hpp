@@ -28,6 +28,8 @@ void draw_tools_section(const SidePanel& p);
 // The active tool's own fields below its hint (typed coordinates of a new vertex).
 void draw_tool_options(const SidePanel& p);
 void draw_selection_section(const SidePanel& p);
+// Rotate, scale and move the selected points by typed values about a pivot (one undo step each).
+void draw_transform_section(const SidePanel& p);
 // The free curve `curve` of the selected curve point `point` (in the Selection section).
 void draw_curve_section(const SidePanel& p, int curve, int point);  // point -1: the whole curve
 // Returns true when the densities changed.
