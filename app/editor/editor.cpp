@@ -206,7 +206,7 @@ void Editor::frame() {
   send_keys();
   model_.pointer(pointer_input());
   model_.update();
-  if (model_.take_loaded() && !loaded_ms_) loaded_ms_ = ms_since_launch();
+  if (!loaded_ms_) loaded_ms_ = model_.loaded_ms();
   SceneViews& views = model_.views();
   const EditorLayout l = model_.layout();
   ViewportFrame f;

@@ -7,6 +7,7 @@
 #include "app/editor/logic/add_edge_tool.hpp"
 #include "app/editor/logic/add_vertex_tool.hpp"
 #include "app/editor/logic/compare_layout.hpp"
+#include "app/editor/logic/launch_time.hpp"
 #include "app/editor/logic/make_face_tool.hpp"
 #include "app/editor/logic/new_curve_tool.hpp"
 #include "app/editor/logic/select_tool.hpp"
@@ -115,7 +116,7 @@ void EditorModel::update() {
   follow_session();
   if (views_.poll()) {
     // The worker's evaluation is taken: the first frame of the scene follows.
-    loaded_ = true;
+    if (!loaded_ms_) loaded_ms_ = ms_since_launch();
     if (!views_.compare_error().empty()) say("cannot compare: " + views_.compare_error());
     nav_.unframe();
     for (ScenePicker& p : pickers_) p.reset();

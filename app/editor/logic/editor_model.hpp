@@ -177,8 +177,9 @@ class EditorModel {
   bool animating() const { return moving() || release_time_.has_value(); }
   // The time of the last release, until the fine surfaces are shown (settle time).
   std::optional<Clock::time_point>& release_time() { return release_time_; }
-  // The first time the evaluated scene was taken (for launch figures), if it was.
-  bool take_loaded() { return std::exchange(loaded_, false); }
+  // When the first evaluated scene was taken, in ms since the process's launch (the launch
+  // figure editor_loaded_ms), if it was.
+  std::optional<double> loaded_ms() const { return loaded_ms_; }
 
   // Windows and requests the actions switch.
   bool show_help = false;
@@ -241,7 +242,7 @@ class EditorModel {
   std::optional<ContextTarget> context_;  // the right-click menu is open on this
   uint64_t context_serial_ = 0;
   std::optional<Clock::time_point> release_time_;  // waiting for the fine surfaces
-  bool loaded_ = false;
+  std::optional<double> loaded_ms_;
 };
 
 }  // namespace pl
