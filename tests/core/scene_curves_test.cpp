@@ -10,6 +10,7 @@
 #include "core/curve/curvature.hpp"
 #include "core/curve/nurbs_curve.hpp"
 #include "core/curve/scene_curve.hpp"
+#include "scene_curve_samples.hpp"
 
 namespace pl {
 namespace {
@@ -37,14 +38,7 @@ double diagonal(const std::vector<Vec3>& pts) {
 }
 
 SceneCurve circle_curve(Vec3 center, double r) {
-  const NurbsCurve n = NurbsCurve::circle(center, Vec3(1, 0, 0), Vec3(0, 1, 0), r);
-  SceneCurve c;
-  c.type = CurveType::Nurbs;
-  c.degree = 2;
-  c.knots = n.knots();
-  c.points = n.control_points();
-  c.weights = n.weights();
-  return c;
+  return test::circle_scene_curve(center, r);
 }
 
 SceneCurve spline_curve(int p, std::vector<double> knots, std::vector<Vec3> pts) {
