@@ -1,10 +1,12 @@
 #include "app/editor/logic/curve_actions.hpp"
 
+#include <algorithm>
 #include <limits>
 
-#include "render/draw_scene_builder.hpp"
 #include "app/document/curve_commands.hpp"
+#include "app/document/curves_to_edges_command.hpp"
 #include "app/editor/logic/tool.hpp"
+#include "render/draw_scene_builder.hpp"
 
 namespace pl {
 
@@ -71,6 +73,40 @@ void add_curve_actions(ActionRegistry& r, Document& doc, Selection& selection,
     a.enabled = [&doc, &selection] { return selected_curve(doc.scene(), selection).has_value(); };
     r.add(std::move(a));
   }
+  // Every selected curve at once, so that curves drawn to meet become one connected chain; the
+  // new edges are selected (Make Face then takes them as they are).
+  Action to_edges = make_action(
+      "curve.to_edges", "Curve", "To Network Edges", {},
+      "the selected curves become network edges (cubic spans: exact for a cubic, else fitted "
+      "within 1e-4 of their size); ends meeting vertices connect to them",
+      [&doc, &selection, hooks] {
+        const std::vector<int> curves = selected_curves(doc.scene(), selection);
+        if (curves.empty()) return;
+        const auto command = std::make_shared<CurvesToEdgesCommand>(curves);
+        if (!run_command(doc, hooks.say, command)) return;
+        std::vector<SelectionItem> edges;
+        for (int e : command->edges()) edges.push_back(SelectionItem::edge(e));
+        selection.set(std::move(edges));
+      });
+  to_edges.context = context_bit(ContextTarget::Point) | context_bit(ContextTarget::Curve) |
+                     context_bit(ContextTarget::Empty);
+  to_edges.enabled = [&doc, &selection] {
+    return selected_curve(doc.scene(), selection).has_value();
+  };
+  r.add(std::move(to_edges));
+}
+
+std::vector<int> selected_curves(const Scene& scene, const Selection& selection) {
+  std::vector<int> out;
+  for (const SelectionItem& i : selection.items()) {
+    int c = -1;
+    if (i.kind == SelectionItem::Kind::Curve && item_exists(scene, i)) c = i.index;
+    if (i.kind == SelectionItem::Kind::Point && i.point.kind == PointRef::Kind::CurvePoint &&
+        point_exists(scene, i.point))
+      c = i.point.object;
+    if (c >= 0 && std::find(out.begin(), out.end(), c) == out.end()) out.push_back(c);
+  }
+  return out;
 }
 
 }  // namespace pl

@@ -2,7 +2,8 @@
 // point), as actions of the
 // editor's table (menu bar Curve, right-click menu on a point, F1): insert a knot (at the curve
 // parameter nearest where the right-click menu was opened, else in the middle of the longest
-// span), elevate the degree, split (same parameter), reverse. Each is one Document command; a
+// span), elevate the degree, split (same parameter), reverse, and turn the selected curves into
+// network edges. Each is one Document command; a
 // refusal says why in the status bar and changes nothing. GUI-free and unit-tested through the
 // registry.
 #pragma once
@@ -19,6 +20,8 @@ namespace pl {
 
 // The first selected curve (picked whole or by one of its points), if any.
 std::optional<int> selected_curve(const Scene& scene, const Selection& selection);
+// Every selected curve (whole or by a point), each once, in selection order.
+std::vector<int> selected_curves(const Scene& scene, const Selection& selection);
 // The parameter of the curve sample nearest to `at` (in space).
 double nearest_curve_parameter(const SceneCurve& curve, const Vec3& at);
 // The middle of the curve's longest span: where a knot goes when nothing says where.
