@@ -1,7 +1,9 @@
 #include "app/document/scene_file.hpp"
 
 #include "core/base/data_error.hpp"
+#include "core/cad/cad_curves.hpp"
 #include "core/io/gbp_io.hpp"
+#include "core/io/obj_curves.hpp"
 #include "core/io/scene_io.hpp"
 #include "core/patch/patch_types.hpp"
 
@@ -56,7 +58,27 @@ Scene load_scene_file(const std::filesystem::path& path) {
     scene.patches.push_back({"", std::make_shared<GBPatch>(read_gbp(path))});
     return scene;
   }
-  throw DataError(path.string(), "", "unknown file type \"" + ext + "\" (expected .json or .gbp)");
+  if (ext == ".obj") {
+    Scene scene;
+    scene.name = path.stem().string();
+    scene.curves = read_obj_curves(path).curves;
+    return scene;
+  }
+  if (cad_format_for(path)) {
+    Scene scene;
+    scene.name = path.stem().string();
+    scene.curves = read_cad_curves(path).curves;
+    return scene;
+  }
+  throw DataError(path.string(), "",
+                  "unknown file type \"" + ext +
+                      "\" (expected .json, .gbp, or curves from .obj, .step, .stp, .igs, .iges)");
+}
+
+const std::vector<std::string>& openable_extensions() {
+  static const std::vector<std::string> extensions{".json", ".gbp", ".obj", ".step",
+                                                   ".stp",  ".igs", ".iges"};
+  return extensions;
 }
 
 }  // namespace pl

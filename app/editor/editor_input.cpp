@@ -30,7 +30,7 @@ std::vector<HelpRow> mouse_help() {
       {"Right- or middle-drag", "pan"},
       {"Right-click", "what can be done with the object under the cursor"},
       {"Wheel", "zoom towards the cursor"},
-      {"Drop a file on the window", "open it (.json, .gbp)"},
+      {"Drop a file on the window", "open it (.json, .gbp; curves from .obj, .step, .igs)"},
   };
 }
 

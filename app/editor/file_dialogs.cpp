@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <iostream>
 
+#include "app/document/scene_file.hpp"
+
 namespace pl {
 
 void FileDialogs::browse(Purpose purpose, const std::filesystem::path& dir,
@@ -13,7 +15,7 @@ void FileDialogs::browse(Purpose purpose, const std::filesystem::path& dir,
   purpose_ = purpose;
   switch (purpose) {
     case Purpose::Open:
-      browser_.open("Open scene", "Open", dir, {".json", ".gbp"}, "");
+      browser_.open("Open scene", "Open", dir, openable_extensions(), "");
       break;
     case Purpose::SaveAs:
       // The types Open lists; a .gbp holds a single GB patch (a scene that is one is saved back).

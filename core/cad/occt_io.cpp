@@ -20,7 +20,9 @@
 #include <TDF_LabelSequence.hxx>
 #include <TDataStd_Name.hxx>
 #include <TDocStd_Document.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TransferBRep.hxx>
@@ -235,6 +237,17 @@ CadFile read_cad_file_unguarded(const std::filesystem::path& path, CadFormat for
     for (const auto& [n, s] : named)
       if (s.IsSame(e.Current())) name = n;
     out.faces.emplace_back(name, TopoDS::Face(e.Current()));
+  }
+  // Edges: once each however many faces share one; a free curve is a root of its own.
+  for (int i = 1; i <= roots.Length(); ++i)
+    named.emplace_back(label_name(roots(i)), st->GetShape(roots(i)));
+  TopTools_IndexedMapOfShape edges;
+  TopExp::MapShapes(out.shape, TopAbs_EDGE, edges);
+  for (int i = 1; i <= edges.Extent(); ++i) {
+    std::string name;
+    for (const auto& [n, s] : named)
+      if (s.IsSame(edges(i))) name = n;
+    out.edges.emplace_back(name, TopoDS::Edge(edges(i)));
   }
   return out;
 }

@@ -30,6 +30,7 @@ struct CadFile {
   TopoDS_Shape shape;
   std::string product;                                     // the top-level name, if any
   std::vector<std::pair<std::string, TopoDS_Face>> faces;  // every face, with its name if any
+  std::vector<std::pair<std::string, TopoDS_Edge>> edges;  // every edge once, with its name if any
 };
 // Reads a file written by write_cad_file (or any STEP/IGES file); throws DataError naming the
 // file for whatever fails, OCCT's own failures included, and once the deadline passes.

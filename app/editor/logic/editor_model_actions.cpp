@@ -40,7 +40,8 @@ void EditorModel::add_file_actions() {
     shell_.confirm_discard("start a new scene", [this] { new_scene(); });
   }));
   r.add(make_action(
-      "file.open", "File", "Open...", {"Ctrl+O"}, "open a scene (.json) or GB patch (.gbp)",
+      "file.open", "File", "Open...", {"Ctrl+O"},
+      "open a scene (.json), a GB patch (.gbp), or curves (.obj polylines, .step/.igs edges)",
       [this] { shell_.confirm_discard("open another file", [this] { shell_.ask_open(); }); }));
   r.add(make_action("file.save", "File", "Save", {"Ctrl+S"}, "save (asks for a name when untitled)",
                     [this] { save(); }));
