@@ -15,6 +15,8 @@
 //   pointer at X Y                               (the cursor moved while a button is held)
 //   status MESSAGE                               (every new status-bar message)
 //   text-input 1|0                               (a text field took or gave up the keyboard)
+//   help-window 1|0 [focused]                    (F1's window opened (with the keyboard focus)
+//                                                 or closed)
 // and, whenever it changed, the state at rest (no button held, no drag, fine surfaces shown):
 //   state revision R vertices V edges E faces F curves C selected N can-undo U can-redo D tool NAME
 //   view OX OY XX XY YX YY ZX ZY window WX WY    (pixels of the world origin and of the unit
@@ -132,6 +134,13 @@ void Editor::report_state() {
   if (io.WantTextInput != debug_.text_input) {
     debug_.text_input = io.WantTextInput;
     std::printf("text-input %d\n", int(io.WantTextInput));
+  }
+  // F1's window: its drawing (last frame) says whether it has the keyboard focus.
+  const bool help_focused = model_.show_help && esc_closes_ == &model_.show_help;
+  if (model_.show_help != debug_.help || help_focused != debug_.help_focused) {
+    debug_.help = model_.show_help;
+    debug_.help_focused = help_focused;
+    std::printf("help-window %d%s\n", int(model_.show_help), help_focused ? " focused" : "");
   }
   const std::string message = model_.status().message();
   if (message != debug_.message) {
