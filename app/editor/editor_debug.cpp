@@ -7,8 +7,10 @@
 //   debug-curve NAME X Y window WX WY      a free curve's line, NAME as "curve 0")
 //   selection: ITEM, ITEM, ...            (after every change; "selection: none" when empty)
 //   menu-item LABEL X Y window WX WY      (the centre of each context-menu item, once laid out)
-//   panel-item LABEL X Y window WX WY     (the centre of a side-panel button, when it appears or
-//                                          moves: the interior buttons of a face)
+//   panel-item LABEL X Y window WX WY rect X0 Y0 X1 Y1
+//                                         (the centre and rectangle of a side-panel item, when it
+//                                          appears or moves: the tool buttons and hint, the
+//                                          interior buttons of a face, a "tooltip")
 //   saved PATH revision N
 // With --debug-state, also (window pixels relative to the window, like the lines above):
 //   pointer down|up B X Y [shift] [ctrl] [alt]   (as the frame saw the press or release)
@@ -99,8 +101,8 @@ void Editor::report_menu_item(const std::string& label, float x0, float y0, floa
 void Editor::report_panel_item(const std::string& label, float x0, float y0, float x1, float y1) {
   const auto [wx, wy] = window_.position();
   char line[256];
-  std::snprintf(line, sizeof line, "panel-item %s %.1f %.1f window %d %d", label.c_str(),
-                0.5 * (x0 + x1), 0.5 * (y0 + y1), wx, wy);
+  std::snprintf(line, sizeof line, "panel-item %s %.1f %.1f window %d %d rect %.1f %.1f %.1f %.1f",
+                label.c_str(), 0.5 * (x0 + x1), 0.5 * (y0 + y1), wx, wy, x0, y0, x1, y1);
   std::string& last = debug_.panel_items[label];
   if (last == line) return;
   last = line;
