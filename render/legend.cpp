@@ -113,4 +113,21 @@ void draw_legend(Image& image, const ColorRange& range, const std::string& title
   draw_legend_at(image, legend, scale, x, y, bar_h);
 }
 
+void draw_legends(Image& image, const std::vector<LegendSpec>& legends, double scale) {
+  if (legends.empty()) return;
+  const int n = static_cast<int>(legends.size()), margin = panel_margin(scale);
+  // The height of one legend alone, shared out: each panel's frame and the gaps between them
+  // come out of it (one legend is exactly draw_legend's).
+  const int frame = legend_height(scale, 0);
+  const int alone = frame + legend_bar_height(image.height);
+  const int bar = std::max(40, (alone - (n - 1) * margin) / n - frame);
+  const int total = n * legend_height(scale, bar) + (n - 1) * margin;
+  int y = (image.height - total) / 2;
+  for (const LegendSpec& legend : legends) {
+    const int x = image.width - legend_width(legend, scale) - margin;
+    draw_legend_at(image, legend, scale, x, y, bar);
+    y += legend_height(scale, bar) + margin;
+  }
+}
+
 }  // namespace pl

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "render/color_map.hpp"
 #include "render/image.hpp"
@@ -36,6 +37,11 @@ void draw_legend_at(Image& image, const LegendSpec& legend, double scale, int x,
 // (margins included), so panels can be laid out beside it.
 void draw_legend(Image& image, const ColorRange& range, const std::string& title, double scale);
 int legend_reserved_width(const ColorRange& range, const std::string& title, double scale);
+
+// Several legends at the right edge of `image`, one under the other (in order, right-aligned),
+// the group vertically centred; they share the height a single legend would have, each bar at
+// least 40 px (so with many they may reach past the image, as a single one may).
+void draw_legends(Image& image, const std::vector<LegendSpec>& legends, double scale);
 
 // The margin around legends and keys.
 inline int panel_margin(double scale) {

@@ -8,9 +8,10 @@ namespace pl {
 namespace {
 
 constexpr int kColorMapEntries = 1024;
-// Pulls overlay lines in front of the triangles they lie on; the triangles are chords of the
-// curved surface, so a line sampled on the exact surface can sit slightly behind them.
-constexpr float kOverlayDepthBias = 4e-4f;
+// The halo under a selection's outline: dark enough to part the outline from a light colour,
+// wider by this many pixels.
+constexpr std::array<float, 4> kOutlineHalo = {0.05f, 0.05f, 0.07f, 0.75f};
+constexpr float kOutlineHaloExtra = 3.0f;
 // Point sprites are pulled towards the eye by this many radii (point.vert.glsl).
 constexpr float kPointDepthPush = 3.0f;
 
@@ -233,6 +234,18 @@ void SceneRenderer::draw_tint(const GpuScene& scene, std::span<const int> surfac
   glDepthMask(GL_TRUE);
   glBindVertexArray(0);
   gl::check_error("SceneRenderer::draw_tint");
+}
+
+void SceneRenderer::draw_selection(const GpuScene& scene, std::span<const int> surfaces,
+                                   const GpuPrimitives& outline, const Camera& camera,
+                                   const DisplaySettings& settings, const SelectionStyle& style,
+                                   const Viewport& v) const {
+  if (!colours_carry_values(settings) && style.tint[3] > 0)
+    draw_tint(scene, surfaces, camera, style.tint, v);
+  if (outline.empty()) return;
+  // The halo where the outline is seen only: behind a surface the faint outline is enough.
+  draw_guides(outline, camera, kOutlineHalo, style.line_width + kOutlineHaloExtra, false, v);
+  draw_guides(outline, camera, style.line, style.line_width, style.show_hidden, v);
 }
 
 void SceneRenderer::draw_guides(const GpuPrimitives& lines, const Camera& camera,

@@ -29,6 +29,23 @@ inline constexpr float kArrowWidth = 1.8f, kArrowHead = 11.0f;
 // be taken for the visible part.
 inline constexpr float kHiddenAlpha = 0.22f;
 inline constexpr float kHiddenPointAlpha = 0.3f;
+// Pulls overlay lines in front of the triangles they lie on (NDC depth): the triangles are chords
+// of the curved surface, so a line sampled on the exact surface can sit slightly behind them.
+inline constexpr float kOverlayDepthBias = 4e-4f;
+
+// Whether the surfaces' colours carry values a legend reads (the curvature modes, and the
+// distance colouring drawn with them): a tint over them would change what they say.
+inline bool colours_carry_values(const DisplaySettings& s) {
+  return s.base == BaseMode::Curvature;
+}
+
+// How draw_selection marks surfaces (the editor's selection, or what is under the cursor).
+struct SelectionStyle {
+  std::array<float, 4> tint{};  // RGBA over the surfaces, where the colours carry no values
+  std::array<float, 4> line{};  // the outline (the surfaces' borders, edges)
+  float line_width = 3.5f;      // pixels, times the viewport's pixel scale
+  bool show_hidden = true;      // the outline's parts behind surfaces drawn faintly
+};
 
 class SceneRenderer {
  public:
@@ -46,6 +63,15 @@ class SceneRenderer {
   // scene hides stays hidden). Indices outside the scene are ignored.
   void draw_tint(const GpuScene& scene, std::span<const int> surfaces, const Camera& camera,
                  const std::array<float, 4>& color, const Viewport& viewport) const;
+  // The selection over a scene just drawn with draw() and the same camera and settings: the
+  // given surfaces of `scene` tinted with style.tint unless the settings colour them by value
+  // (colours_carry_values: there the tint would wash the colour map out and the legend would
+  // read wrong values), then `outline` in style.line over a dark halo, so that it reads on any
+  // colour. Depth-tested, as draw_tint and draw_guides.
+  void draw_selection(const GpuScene& scene, std::span<const int> surfaces,
+                      const GpuPrimitives& outline, const Camera& camera,
+                      const DisplaySettings& settings, const SelectionStyle& style,
+                      const Viewport& viewport) const;
   // Lines of one colour (highlighted curves, a work-plane grid) over the scene, `width` pixels
   // (times the viewport's pixel scale); with show_hidden their parts behind surfaces are drawn
   // faintly, as the control net's are.

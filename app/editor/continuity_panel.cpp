@@ -149,10 +149,9 @@ void draw_continuity_section(const SidePanel& p) {
   double& threshold = p.model.prefs().continuity_threshold_deg;
   ImGui::InputDouble("Warn above", &threshold, 0, 0, "%.3g deg");
   threshold = std::clamp(threshold, kMinContinuityThresholdDeg, kMaxContinuityThresholdDeg);
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip(
-        "An edge is a warning when the normals of its two faces differ by more\n"
-        "than this anywhere along it (kept in the preferences)");
+  panel_tooltip(p,
+                "An edge is a warning when the normals of its two faces differ by more\n"
+                "than this anywhere along it (kept in the preferences)");
   const auto& fillings = p.model.continuity().fillings();
   for (std::size_t i = 0; i < fillings.size(); ++i) draw_filling(p, fillings[i], i, threshold);
   if (fillings.empty()) ImGui::TextDisabled("Waiting for the surfaces.");

@@ -10,17 +10,19 @@
 
 namespace pl {
 
-void draw_curvature_graph_window(bool* open, const Scene& scene, std::optional<int> curve,
+bool draw_curvature_graph_window(bool* open, const Scene& scene, std::optional<int> curve,
                                  float ui_scale) {
   ImGui::SetNextWindowSize(ImVec2(420 * ui_scale, 260 * ui_scale), ImGuiCond_FirstUseEver);
   if (!ImGui::Begin("Curvature Graph", open)) {
+    const bool focused = ImGui::IsWindowFocused(ImGuiFocusedFlags_RootAndChildWindows);
     ImGui::End();
-    return;
+    return focused;  // collapsed, still closable with Esc
   }
+  const bool focused = ImGui::IsWindowFocused(ImGuiFocusedFlags_RootAndChildWindows);
   if (!curve || *curve < 0 || *curve >= int(scene.curves.size())) {
     ImGui::TextDisabled("Select a point of a curve to see its curvature against t.");
     ImGui::End();
-    return;
+    return focused;
   }
   const SceneCurve& c = scene.curves[*curve];
   const CurvatureGraph g = curvature_graph(c, 64);
@@ -57,6 +59,7 @@ void draw_curvature_graph_window(bool* open, const Scene& scene, std::optional<i
   }
   ImGui::Text("t from %.4g to %.4g; %zu knot ticks", a, b, g.knots.size());
   ImGui::End();
+  return focused;
 }
 
 }  // namespace pl

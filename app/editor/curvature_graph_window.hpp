@@ -9,7 +9,8 @@
 namespace pl {
 
 // `open` is cleared when the window is closed. `curve` is the selected curve's index, if any.
-void draw_curvature_graph_window(bool* open, const Scene& scene, std::optional<int> curve,
+// Returns true when the window has the keyboard focus (Esc then closes it).
+bool draw_curvature_graph_window(bool* open, const Scene& scene, std::optional<int> curve,
                                  float ui_scale);
 
 }  // namespace pl

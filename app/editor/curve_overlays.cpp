@@ -1,6 +1,8 @@
 // The free curves' marks over a view panel (ImGui's background list, like the point overlays):
 // knot ticks across the curves, and the joints of concatenated curves labelled with their class
-// and figures. The geometry is CurveMarks' (GUI-free); this only projects and draws it.
+// and figures. The geometry is CurveMarks' (GUI-free); this only projects and draws it. Marks
+// behind a surface (the painter reads the view's depth: points_seen) are drawn faintly, as the
+// curves there are, and their labels not at all.
 #include <imgui.h>
 
 #include <optional>
@@ -8,6 +10,7 @@
 
 #include "app/editor/viewport_overlays.hpp"
 #include "render/palette.hpp"
+#include "render/scene_renderer.hpp"
 
 namespace pl {
 
@@ -30,6 +33,14 @@ Rgb joint_colour(int g) {
 
 }  // namespace
 
+std::vector<Vec3> curve_mark_points(const CurveMarks& marks) {
+  std::vector<Vec3> points;
+  for (const std::vector<KnotTick>& curve : marks.ticks())
+    for (const KnotTick& k : curve) points.push_back(k.point);
+  for (const JointReport& j : marks.joints()) points.push_back(j.position);
+  return points;
+}
+
 void draw_curve_marks(const OverlayFrame& o) {
   if (!o.curve_marks) return;
   const CurveMarks& marks = *o.curve_marks;
@@ -40,6 +51,13 @@ void draw_curve_marks(const OverlayFrame& o) {
   const WindowProjector project(o.camera, o.rect);
   const float s = o.ui_scale;
   const ImU32 ink = rgba(palette::kInk), halo = rgba(palette::kPanel, 0.85f);
+  const ImU32 faint_ink = rgba(palette::kInk, kHiddenAlpha),
+              faint_halo = rgba(palette::kPanel, 0.85f * kHiddenAlpha);
+  // Whether the n-th point of curve_mark_points is seen.
+  std::size_t index = 0;
+  auto seen = [&o](std::size_t n) {
+    return !o.marks_seen || n >= o.marks_seen->size() || (*o.marks_seen)[n] != 0;
+  };
   // Curve ends at a joint get the joint's ring instead of their ticks.
   std::set<std::pair<int, bool>> joined;
   for (const JointReport& j : marks.joints())
@@ -47,6 +65,7 @@ void draw_curve_marks(const OverlayFrame& o) {
   for (std::size_t c = 0; c < marks.ticks().size(); ++c) {
     std::optional<Vec2> last;  // the last tick drawn on this curve
     for (const KnotTick& k : marks.ticks()[c]) {
+      const bool visible = seen(index++);
       if (k.end && joined.count({int(c), k.t == marks.ticks()[c].front().t})) continue;
       const auto t = tick_on_screen(project, k, tick_length_px(k, 11.0 * s));
       if (!t) continue;
@@ -56,9 +75,9 @@ void draw_curve_marks(const OverlayFrame& o) {
         continue;
       last = t->centre;
       const float w = (k.end ? 2.4f : 1.6f) * s;
-      dl->AddLine(im(t->a), im(t->b), halo, w + 2.0f * s);
-      dl->AddLine(im(t->a), im(t->b), ink, w);
-      if (!k.end && k.multiplicity > 1) {
+      dl->AddLine(im(t->a), im(t->b), visible ? halo : faint_halo, w + 2.0f * s);
+      dl->AddLine(im(t->a), im(t->b), visible ? ink : faint_ink, w);
+      if (visible && !k.end && k.multiplicity > 1) {
         const std::string label = std::to_string(k.multiplicity) + "x";
         const ImVec2 size = ImGui::CalcTextSize(label.c_str());
         const Vec2 at = t->b + 4.0 * s * t->across;
@@ -74,12 +93,15 @@ void draw_curve_marks(const OverlayFrame& o) {
   }
   // Joints: a ring on the joint and its label at the upper right.
   for (const JointReport& j : marks.joints()) {
+    const bool visible = seen(index++);
     const auto p = project(j.position);
     if (!p) continue;
     const int g = joint_continuity(j, marks.size());
-    const ImU32 colour = rgba(joint_colour(g));
-    dl->AddCircle(im(*p), 7.0f * s, halo, 0, 4.0f * s);
+    const float alpha = visible ? 1.0f : kHiddenAlpha;
+    const ImU32 colour = rgba(joint_colour(g), alpha);
+    dl->AddCircle(im(*p), 7.0f * s, visible ? halo : faint_halo, 0, 4.0f * s);
     dl->AddCircle(im(*p), 7.0f * s, colour, 0, 2.0f * s);
+    if (!visible) continue;  // the label of a joint behind a surface would read as in front
     const std::string label = joint_label(j, marks.size());
     const ImVec2 size = ImGui::CalcTextSize(label.c_str());
     const ImVec2 corner(float(p->x + 12 * s), float(p->y - 12 * s - size.y));

@@ -58,22 +58,20 @@ bool draw_display_section(const SidePanel& p) {
   ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.5f);
   ImGui::Checkbox("Probe", &p.model.prefs().show_probe);
   ImGui::Checkbox("Curvature combs", &d.combs);
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip(
-        "Teeth of length proportional to the curvature, away from the centre of\n"
-        "curvature, on the curves and borders shown (on the curves if neither is)");
+  panel_tooltip(p,
+                "Teeth of length proportional to the curvature, away from the centre of\n"
+                "curvature, on the curves and borders shown (on the curves if neither is)");
   if (d.combs) {
     float scale = float(d.comb_scale);
     if (ImGui::SliderFloat("Comb scale", &scale, float(kMinCombScale), float(kMaxCombScale),
                            "%.2f x", ImGuiSliderFlags_Logarithmic))
       d.comb_scale = scale;
-    if (ImGui::IsItemHovered())
-      ImGui::SetTooltip(
-          "Multiplies the automatic tooth length (the 90th-percentile curvature\n"
-          "gets 6 %% of the scene diagonal; teeth are capped at 3 times that)");
+    panel_tooltip(p,
+                  "Multiplies the automatic tooth length (the 90th-percentile curvature\n"
+                  "gets 6 % of the scene diagonal; teeth are capped at 3 times that)");
     // A new count resamples the combs only (the views follow it each frame, no re-evaluation).
     ImGui::SliderInt("Comb teeth", &d.comb_teeth, kMinCombTeeth, kMaxCombTeeth);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Teeth per curve");
+    panel_tooltip(p, "Teeth per curve");
   }
   // The interface's size: the monitor's content scale unless the user picks one (applied from
   // the next frame, kept in the preferences).
@@ -90,8 +88,7 @@ bool draw_display_section(const SidePanel& p) {
     p.model.prefs().fine_density = densities[1];
   }
   const bool rebuild = ImGui::IsItemDeactivatedAfterEdit();
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("Samples per boundary curve while dragging / at rest");
+  panel_tooltip(p, "Samples per boundary curve while dragging / at rest");
   return rebuild;
 }
 

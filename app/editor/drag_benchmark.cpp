@@ -11,7 +11,7 @@
 // and loaded are the times from the process's launch to the first frame swapped (the progress bar)
 // and to the moment the worker's evaluated scene is taken (the frame showing it follows), and the peak RSS is the process's high-water mark
 // after all of it: loading and the first evaluation included. Display settings are the
-// defaults (the user's preferences are not read).
+// defaults (the user's preferences are not read), or those --display MODE names.
 #include <sys/resource.h>
 #include <time.h>
 
@@ -112,6 +112,7 @@ int Editor::run_drag_benchmark() {
       model_.views().panels() > 1 ? " " : "",
       model_.views().panels() > 1 ? schemes_keywords(model_.views().setup()).c_str() : "", coarse,
       fine, view.density_note().c_str());
+  if (options_.display) std::printf("# display %s\n", options_.display->c_str());
   std::printf("# mean evaluation per drag frame %.2f ms (the rest is drawing, UI and swap)\n",
               eval_ms / kDragFrames);
   std::printf("figure editor_panes %d panes\n", model_.views().panels());

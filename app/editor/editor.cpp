@@ -16,6 +16,7 @@
 #include "app/editor/logic/editor_paths.hpp"
 #include "app/editor/logic/launch_time.hpp"
 #include "app/editor/side_panel.hpp"
+#include "render/display_settings.hpp"
 
 namespace pl {
 
@@ -45,6 +46,18 @@ EditorModelOptions model_options(const EditorOptions& o) {
 Preferences startup_preferences(const EditorOptions& o,
                                 const std::optional<std::filesystem::path>& file) {
   Preferences prefs = file && !o.bench_drag ? load_preferences(*file) : default_preferences();
+  if (o.display) {
+    const DisplaySettings mode = parse_display_mode(*o.display);  // checked by run_editor
+    DisplaySettings& d = prefs.display;
+    d.base = mode.base;
+    d.curvature = mode.curvature;
+    d.isophote_lines = mode.isophote_lines;
+    d.isophotes_over_zebra = mode.isophotes_over_zebra;
+    d.control_net = d.control_net || mode.control_net;
+    d.network_curves = d.network_curves || mode.network_curves;
+    d.borders = d.borders || mode.borders;
+    d.combs = d.combs || mode.combs;
+  }
   if (!o.compare_schemes.empty()) {
     prefs.compare_schemes = o.compare_schemes;
     // The first pane is the base.
@@ -170,10 +183,14 @@ void Editor::draw_interface(const ColorRange& range) {
     draw_probe_window(*mouse.probe, s >= 0 && s < int(meshes.size()) ? meshes[s].name : "",
                       distance, ui_scale_);
   }
-  if (m.show_help) draw_help_window(&m.show_help, m.actions(), help_key_, renderer_, ui_scale_);
-  if (m.show_curvature_graph)
-    draw_curvature_graph_window(&m.show_curvature_graph, m.doc().scene(),
-                                selected_curve(m.doc().scene(), m.selection()), ui_scale_);
+  // The window with the keyboard focus, if it is one Esc closes (send_keys, next frame).
+  esc_closes_ = nullptr;
+  if (m.show_help && draw_help_window(&m.show_help, m.actions(), help_key_, renderer_, ui_scale_))
+    esc_closes_ = &m.show_help;
+  if (m.show_curvature_graph &&
+      draw_curvature_graph_window(&m.show_curvature_graph, m.doc().scene(),
+                                  selected_curve(m.doc().scene(), m.selection()), ui_scale_))
+    esc_closes_ = &m.show_curvature_graph;
   draw_rename();
   if (const auto& target = m.context_target()) {
     if (m.context_serial() != context_serial_) {

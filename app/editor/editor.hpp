@@ -45,6 +45,10 @@ struct EditorOptions {
   bool difference = false;      // and GB coloured by its distance to Gregory (implies compare)
   std::string compare_schemes;  // the panes' schemes ("gregory,gb,..."), the first the base
   std::optional<std::filesystem::path> screenshot;  // write one, then quit (scripts, docs)
+  // --display MODE (with --bench-drag): the display the drag is measured in, in the render
+  // command's syntax ("mean+isophotes+combs"): its base mode, curvature and isophote lines, and
+  // the overlays it names on top of the defaults' (control net, network curves, borders).
+  std::optional<std::string> display;
 };
 
 class Editor final : public EditorShell {
@@ -111,6 +115,9 @@ class Editor final : public EditorShell {
   ViewportPainter painter_;
   PointKeyImage help_key_;       // F1's key of the control points' symbols
   uint64_t context_serial_ = 0;  // the context menu last opened
+  // The flag of the window that had the keyboard focus last frame (F1's help, the curvature
+  // graph), or null: Esc clears it, closing that window, instead of reaching the model.
+  bool* esc_closes_ = nullptr;
   // What editor_debug.cpp has printed: the objects' positions, the last selection, and the
   // frames the context menu has been open (its items are printed once laid out).
   struct DebugState {
@@ -120,6 +127,7 @@ class Editor final : public EditorShell {
     std::string state;        // the last state report (printed again only when it changes)
     std::string message;      // the last status message printed
     bool text_input = false;  // a text field had the keyboard
+    bool help = false, help_focused = false;         // F1's window shown, with the keyboard focus
     std::map<std::string, std::string> panel_items;  // label -> the line last printed
   } debug_;
   RenamePopup rename_;

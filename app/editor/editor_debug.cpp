@@ -7,14 +7,18 @@
 //   debug-curve NAME X Y window WX WY      a free curve's line, NAME as "curve 0")
 //   selection: ITEM, ITEM, ...            (after every change; "selection: none" when empty)
 //   menu-item LABEL X Y window WX WY      (the centre of each context-menu item, once laid out)
-//   panel-item LABEL X Y window WX WY     (the centre of a side-panel button, when it appears or
-//                                          moves: the interior buttons of a face)
+//   panel-item LABEL X Y window WX WY rect X0 Y0 X1 Y1
+//                                         (the centre and rectangle of a side-panel item, when it
+//                                          appears or moves: the tool buttons and hint, the
+//                                          interior buttons of a face, a "tooltip")
 //   saved PATH revision N
 // With --debug-state, also (window pixels relative to the window, like the lines above):
 //   pointer down|up B X Y [shift] [ctrl] [alt]   (as the frame saw the press or release)
 //   pointer at X Y                               (the cursor moved while a button is held)
 //   status MESSAGE                               (every new status-bar message)
 //   text-input 1|0                               (a text field took or gave up the keyboard)
+//   help-window 1|0 [focused]                    (F1's window opened (with the keyboard focus)
+//                                                 or closed)
 // and, whenever it changed, the state at rest (no button held, no drag, fine surfaces shown):
 //   state revision R vertices V edges E faces F curves C selected N can-undo U can-redo D tool NAME
 //   view OX OY XX XY YX YY ZX ZY window WX WY    (pixels of the world origin and of the unit
@@ -97,8 +101,8 @@ void Editor::report_menu_item(const std::string& label, float x0, float y0, floa
 void Editor::report_panel_item(const std::string& label, float x0, float y0, float x1, float y1) {
   const auto [wx, wy] = window_.position();
   char line[256];
-  std::snprintf(line, sizeof line, "panel-item %s %.1f %.1f window %d %d", label.c_str(),
-                0.5 * (x0 + x1), 0.5 * (y0 + y1), wx, wy);
+  std::snprintf(line, sizeof line, "panel-item %s %.1f %.1f window %d %d rect %.1f %.1f %.1f %.1f",
+                label.c_str(), 0.5 * (x0 + x1), 0.5 * (y0 + y1), wx, wy, x0, y0, x1, y1);
   std::string& last = debug_.panel_items[label];
   if (last == line) return;
   last = line;
@@ -132,6 +136,13 @@ void Editor::report_state() {
   if (io.WantTextInput != debug_.text_input) {
     debug_.text_input = io.WantTextInput;
     std::printf("text-input %d\n", int(io.WantTextInput));
+  }
+  // F1's window: its drawing (last frame) says whether it has the keyboard focus.
+  const bool help_focused = model_.show_help && esc_closes_ == &model_.show_help;
+  if (model_.show_help != debug_.help || help_focused != debug_.help_focused) {
+    debug_.help = model_.show_help;
+    debug_.help_focused = help_focused;
+    std::printf("help-window %d%s\n", int(model_.show_help), help_focused ? " focused" : "");
   }
   const std::string message = model_.status().message();
   if (message != debug_.message) {

@@ -92,13 +92,12 @@ void Editor::take_screenshot(const fs::path& path) {
       const double m = views.difference_range();
       for (int i = 0; i < views.panels(); ++i)
         if (views.shows_distance(i)) r.panels[i].range = {-m, m};
-      r.legend_title = "distance to " + scheme_short_title(setup.base);
-      r.legend_range = {-m, m};
     }
-    if (r.legend_title.empty() && prefs.display.base == BaseMode::Curvature) {
-      r.legend_title = std::string(curvature_name(prefs.display.curvature)) + " curvature";
-      r.legend_range = range;
-    }
+    // The legends the window shows beside the view (editor.cpp's legend column): with
+    // difference colouring in a curvature mode, the base pane's curvature legend and the
+    // distance legend of the others.
+    r.legends = view_legends(prefs.display, views.compare(), views.difference, range,
+                             views.difference_range(), scheme_short_title(setup.base));
     // The window's view, refitted only in aspect: same direction, target and zoom.
     r.camera = model_.nav().camera();
     const Image image = render_screenshot(renderer_, r);

@@ -47,6 +47,13 @@ void Editor::send_keys() {
     if (chord.key == Key::None) continue;
     // A slider or field being edited keeps the plain keys; Ctrl chords still work.
     if (!chord.ctrl && ImGui::IsAnyItemActive()) continue;
+    // Esc closes the focused window (F1's help, the curvature graph) and does nothing else: the
+    // selection behind it is not what the user is looking at.
+    if (chord == KeyChord{Key::Escape} && esc_closes_) {
+      *esc_closes_ = false;
+      esc_closes_ = nullptr;
+      continue;
+    }
     model_.key(chord);
   }
 }

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cstdio>
 #include <optional>
+#include <stdexcept>
 
 #include "app/editor/editor.hpp"
 #include "app/editor/logic/busy_core.hpp"
@@ -14,6 +15,7 @@
 #include "app/editor/pick_benchmark.hpp"
 #include "core/analysis/compared_schemes.hpp"
 #include "core/base/data_error.hpp"
+#include "render/display_settings.hpp"
 
 namespace pl {
 
@@ -43,6 +45,16 @@ int run_editor(std::span<const std::string> args, std::ostream& out, std::ostrea
       o.bench_drag = true;
     } else if (a == "--busy") {
       busy = true;
+    } else if (a == "--display") {
+      const std::string* v = value();
+      try {
+        if (!v) throw std::invalid_argument("--display takes a MODE such as mean+isophotes+combs");
+        parse_display_mode(*v);
+      } catch (const std::invalid_argument& e) {
+        err << "patchlab: " << e.what() << "\n";
+        return 2;
+      }
+      o.display = *v;
     } else if (a == "--bench-pick") {
       o.bench_pick = true;
     } else if (a == "--debug-point") {
@@ -89,7 +101,8 @@ int run_editor(std::span<const std::string> args, std::ostream& out, std::ostrea
           << "usage: patchlab [FILE] [--size WxH] [--compare] [--compare-schemes S,S,...] "
              "[--difference] [--screenshot "
              "OUT.png] "
-             "[--bench-drag [--busy]] [--bench-pick] [--debug-point NAME]... [--debug-state]\n";
+             "[--bench-drag [--busy] [--display MODE]] [--bench-pick] [--debug-point NAME]... "
+             "[--debug-state]\n";
       return 2;
     } else if (!o.file) {
       o.file = a;
@@ -100,6 +113,10 @@ int run_editor(std::span<const std::string> args, std::ostream& out, std::ostrea
   }
   if (busy && !o.bench_drag) {
     err << "patchlab: --busy goes with --bench-drag\n";
+    return 2;
+  }
+  if (o.display && !o.bench_drag) {
+    err << "patchlab: --display goes with --bench-drag\n";
     return 2;
   }
   // The benchmark's window unless --size says otherwise.

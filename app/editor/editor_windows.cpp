@@ -85,7 +85,7 @@ void draw_status_bar(const StatusLine& status, const StatusFigures& f, float s) 
   ImGui::PopStyleColor();
 }
 
-void draw_help_window(bool* open, const ActionRegistry& actions, PointKeyImage& key,
+bool draw_help_window(bool* open, const ActionRegistry& actions, PointKeyImage& key,
                       const SceneRenderer& renderer, float s) {
   const ImGuiIO& io = ImGui::GetIO();
   // Inside the window at any size: a margin all round, below the menu bar; what does not fit
@@ -103,8 +103,9 @@ void draw_help_window(bool* open, const ActionRegistry& actions, PointKeyImage& 
                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse |
                         ImGuiWindowFlags_NoMove)) {
     ImGui::End();
-    return;
+    return false;
   }
+  const bool focused = ImGui::IsWindowFocused(ImGuiFocusedFlags_RootAndChildWindows);
   const double fb_scale = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0;
   key.update(renderer, s, fb_scale * s);
   const ImVec2 key_size(float(key.width() / fb_scale), float(key.height() / fb_scale));
@@ -158,6 +159,7 @@ void draw_help_window(bool* open, const ActionRegistry& actions, PointKeyImage& 
   }
   ImGui::EndGroup();
   ImGui::End();
+  return focused;
 }
 
 void draw_probe_window(const ProbeHit& p, const std::string& name, std::optional<double> distance,

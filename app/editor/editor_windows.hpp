@@ -49,8 +49,9 @@ class PointKeyImage {
 void draw_status_bar(const StatusLine& status, const StatusFigures& figures, float ui_scale);
 // The mouse rows of F1 (editor_input.cpp, next to the code that handles them).
 std::vector<HelpRow> mouse_help();
-// Sized to fit the window whatever its size (the text wraps, the lists scroll).
-void draw_help_window(bool* open, const ActionRegistry& actions, PointKeyImage& key,
+// Sized to fit the window whatever its size (the text wraps, the lists scroll). Returns true
+// when it has the keyboard focus (Esc then closes it).
+bool draw_help_window(bool* open, const ActionRegistry& actions, PointKeyImage& key,
                       const SceneRenderer& renderer, float ui_scale);
 // `distance`: the comparison's GB-to-Gregory distance under the cursor, in difference mode.
 void draw_probe_window(const ProbeHit& probe, const std::string& surface_name,

@@ -48,7 +48,7 @@ Image render_screenshot(const SceneRenderer& renderer, const ShotRequest& r) {
     if (!r.panels[i].label.empty())
       draw_text(image, int(rects[i].x) + 8 * scale, int(rects[i].y) + 8 * scale, r.panels[i].label,
                 scale + 1, {0.13f, 0.14f, 0.17f});
-  if (!r.legend_title.empty()) draw_legend(image, r.legend_range, r.legend_title, scale);
+  draw_legends(image, r.legends, scale);
   return image;
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "render/image.hpp"
+#include "render/legend.hpp"
 #include "render/scene_renderer.hpp"
 
 namespace pl {
@@ -24,9 +25,9 @@ struct ShotRequest {
   Camera camera;  // as in the window; the aspect is that of one panel of the shot
   std::vector<ShotPanel> panels;
   bool transparent = false;
-  // Legend drawn at the right edge when the title is non-empty.
-  std::string legend_title;
-  ColorRange legend_range;
+  // The legends at the right edge, one under the other: those the window shows beside the view
+  // (view_legends), so the picture reads as the window does.
+  std::vector<LegendSpec> legends;
 };
 
 // Throws std::runtime_error when the driver refuses the size.

@@ -37,6 +37,24 @@ bool draw_side_panel(const SidePanel& p, double top, double bottom) {
   return rebuild;
 }
 
+void panel_tooltip(const SidePanel& p, const std::string& text) {
+  if (!ImGui::IsItemHovered()) return;
+  const float left =
+      ImGui::GetIO().DisplaySize.x - float(EditorLayout::kSidePanelWidth * p.ui_scale);
+  ImGui::SetNextWindowPos(ImVec2(left - 8 * p.ui_scale, ImGui::GetItemRectMin().y),
+                          ImGuiCond_Always, ImVec2(1.0f, 0.0f));
+  ImGui::BeginTooltip();
+  // Wrapped, so a long help line stays within the view beside the panel.
+  ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
+  ImGui::TextUnformatted(text.c_str());
+  ImGui::PopTextWrapPos();
+  if (p.item_probe) {
+    const ImVec2 at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    p.item_probe("tooltip", at.x, at.y, at.x + size.x, at.y + size.y);
+  }
+  ImGui::EndTooltip();
+}
+
 void draw_tools_section(const SidePanel& p) {
   // One button per tool, from the Tools menu's actions (their keys and enabled state).
   bool first = true;
@@ -55,13 +73,19 @@ void draw_tools_section(const SidePanel& p) {
     if (on) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
     if (ImGui::Button(a.label.c_str())) p.model.actions().run(a.id);
     if (on) ImGui::PopStyleColor();
-    if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("%s%s", a.help.c_str(),
-                        a.keys.empty() ? "" : ("  (" + to_string(a.keys[0]) + ")").c_str());
+    if (p.item_probe) {
+      const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+      p.item_probe(a.label, lo.x, lo.y, hi.x, hi.y);
+    }
+    panel_tooltip(p, a.help + (a.keys.empty() ? "" : "  (" + to_string(a.keys[0]) + ")"));
   }
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
   ImGui::TextWrapped("%s", p.model.tools().active().hint().c_str());
   ImGui::PopStyleColor();
+  if (p.item_probe) {
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    p.item_probe("Tool hint", lo.x, lo.y, hi.x, hi.y);
+  }
   draw_tool_options(p);
 }
 
@@ -116,8 +140,7 @@ bool draw_comparison_section(const SidePanel& p) {
       if (ImGui::Selectable(scheme_title(s).c_str(), s == setup.base)) setup.base = s;
     ImGui::EndCombo();
   }
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("The distance colouring and the table's distances are to this scheme");
+  panel_tooltip(p, "The distance colouring and the table's distances are to this scheme");
   bool rebuild = false;
   if (!(setup == before)) {
     p.model.prefs().compare_schemes = schemes_keywords(setup);

@@ -25,6 +25,10 @@ struct SidePanel {
 bool draw_side_panel(const SidePanel& p, double top, double bottom);
 
 void draw_tools_section(const SidePanel& p);
+// The tooltip of the panel item just drawn, while it is hovered: beside the panel, over the view,
+// level with the item, so it never covers the panel's own text (a tool's hint under the buttons,
+// the notes under a field) as one under the cursor would. Told to scripts as "tooltip".
+void panel_tooltip(const SidePanel& p, const std::string& text);
 // The active tool's own fields below its hint (typed coordinates of a new vertex).
 void draw_tool_options(const SidePanel& p);
 void draw_selection_section(const SidePanel& p);

@@ -31,6 +31,9 @@ struct OverlayFrame {
   float ui_scale;
   int panel = 0;  // which view panel (the continuity figures of its filling)
   const CurveMarks* curve_marks = nullptr;
+  // Per point of curve_mark_points(*curve_marks): 1 where no surface hides it (points_seen);
+  // null or short: every mark counts as seen.
+  const std::vector<char>* marks_seen = nullptr;
 };
 
 void draw_point_overlays(const OverlayFrame& o);
@@ -38,6 +41,9 @@ void draw_point_overlays(const OverlayFrame& o);
 // multiplicity), their ends, and a label at each joint of two curves with its G0/G1/G2 figures
 // (curve_overlays.cpp).
 void draw_curve_marks(const OverlayFrame& o);
+// The points the curve marks stand on, in the order draw_curve_marks reads their visibility:
+// every curve's knot ticks, then the joints.
+std::vector<Vec3> curve_mark_points(const CurveMarks& marks);
 // A comparison pane's title (compare_pane_title) at its top left, and its dividers.
 void draw_panel_label(const OverlayFrame& o, const std::string& label, const ViewRect& whole);
 void draw_axis_triad(const OverlayFrame& o);

@@ -11,6 +11,7 @@
 #include "app/editor/logic/selection_properties.hpp"
 #include "app/editor/theme.hpp"
 #include "app/editor/viewport_overlays.hpp"
+#include "render/depth_probe.hpp"
 #include "render/frame.hpp"
 #include "render/gl.hpp"
 
@@ -20,10 +21,14 @@ namespace {
 
 // The selection in the accent colour; what is under the cursor (what a click would select) in a
 // fainter tint of it and white lines; the grid faint, its axes in the axis triad's colours.
-constexpr std::array<float, 4> kSelectedTint = {kAccent[0], kAccent[1], kAccent[2], 0.30f};
-constexpr std::array<float, 4> kSelectedLine = {kAccent[0], kAccent[1], kAccent[2], 1.0f};
-constexpr std::array<float, 4> kHoverTint = {kAccent[0], kAccent[1], kAccent[2], 0.13f};
-constexpr std::array<float, 4> kHoverLine = {1.0f, 1.0f, 1.0f, 0.85f};
+// In the curvature colours neither is tinted (SceneRenderer::draw_selection): the outlines
+// alone mark them, so a selected surface's outline is its border (a face's edges).
+constexpr SelectionStyle kSelected = {{kAccent[0], kAccent[1], kAccent[2], 0.30f},
+                                      {kAccent[0], kAccent[1], kAccent[2], 1.0f},
+                                      3.5f,
+                                      true};
+constexpr SelectionStyle kHovered = {
+    {kAccent[0], kAccent[1], kAccent[2], 0.13f}, {1.0f, 1.0f, 1.0f, 0.85f}, 3.0f, false};
 constexpr std::array<float, 4> kGridLine = {0.42f, 0.44f, 0.50f, 0.55f};
 // Grid cells across the view's height, and how far the grid reaches (in cells from its centre).
 constexpr int kGridCellsPerView = 12;
@@ -59,9 +64,16 @@ uint64_t item_key(const std::optional<SelectionItem>& item) {
 
 }  // namespace
 
-void ViewportPainter::update_guides(const ViewportFrame& f, int panel) {
+void ViewportPainter::update_guides(const ViewportFrame& f, int panel, bool colour_mode) {
   PanelGuides& g = guides_[panel];
   const LiveSurfaces& live = f.model->views().panel(panel).shown();
+  // Per surface, its border polylines (per domain side): the outline of a selected patch, and
+  // of the surface under the cursor where it gets no tint.
+  const auto& borders = f.model->views().panel(panel).curves().borders();
+  auto append_borders = [&](int s, std::vector<Vec3>& out) {
+    if (s >= 0 && s < int(borders.size()))
+      for (const CurvatureComb& side : borders[s]) append_segments(side.points, out);
+  };
   const Scene& scene = f.model->doc().scene();
   const auto& curves = live.draw().network_curves;
   const auto& free_curves = live.draw().free_curves;
@@ -73,7 +85,9 @@ void ViewportPainter::update_guides(const ViewportFrame& f, int panel) {
   };
   const std::size_t surfaces = live.surfaces().surfaces.size();
 
-  const uint64_t selected_key = guide_key(live, f.model->selection().serial());
+  // The outlines depend on the display (a colour mode outlines the hovered surface too).
+  const uint64_t mode_key = colour_mode ? 0x5bd1e995ull : 0;
+  const uint64_t selected_key = guide_key(live, f.model->selection().serial()) ^ mode_key;
   if (selected_key != g.selected_key) {
     g.selected_key = selected_key;
     std::vector<Vec3> lines;
@@ -86,7 +100,6 @@ void ViewportPainter::update_guides(const ViewportFrame& f, int panel) {
       if (e >= 0 && e < int(curves.size())) append_segments(curves[e], lines);
     for (int c : f.model->selection().of_kind(SelectionItem::Kind::Curve))
       if (c >= 0 && c < int(free_curves.size())) append_segments(free_curves[c], lines);
-    if (!lines.empty() || !g.selected.empty()) g.selected.set(lines, {});
     g.selected_surfaces.clear();
     const std::set<int> faces_set(faces.begin(), faces.end());
     const std::vector<int> patches = f.model->selection().of_kind(SelectionItem::Kind::Patch);
@@ -94,14 +107,19 @@ void ViewportPainter::update_guides(const ViewportFrame& f, int panel) {
     if (!faces_set.empty() || !patch_set.empty())
       for (std::size_t s = 0; s < surfaces; ++s) {
         const SelectionItem& i = surface_item(s);
-        if ((i.kind == SelectionItem::Kind::Face ? faces_set : patch_set).count(i.index))
+        if ((i.kind == SelectionItem::Kind::Face ? faces_set : patch_set).count(i.index)) {
           g.selected_surfaces.push_back(int(s));
+          // A face is outlined by its edges (above); a patch by its border.
+          if (i.kind == SelectionItem::Kind::Patch) append_borders(int(s), lines);
+        }
       }
+    if (!lines.empty() || !g.selected.empty()) g.selected.set(lines, {});
   }
 
   const std::optional<SelectionItem> hovered =
       panel == f.model->mouse().panel ? f.model->mouse().under.item : std::nullopt;
-  const uint64_t hovered_key = guide_key(live, item_key(hovered));
+  const uint64_t hovered_key =
+      guide_key(live, item_key(hovered)) ^ mode_key ^ (f.model->selection().serial() << 40);
   if (hovered_key != g.hovered_key) {
     g.hovered_key = hovered_key;
     std::vector<Vec3> lines;
@@ -115,6 +133,10 @@ void ViewportPainter::update_guides(const ViewportFrame& f, int panel) {
     if (hovered && hovered->kind != SelectionItem::Kind::Point)
       for (std::size_t s = 0; s < surfaces; ++s)
         if (surface_item(s) == *hovered) g.hovered_surface = int(s);
+    // A selected surface keeps its selection's outline alone.
+    if (colour_mode && std::find(g.selected_surfaces.begin(), g.selected_surfaces.end(),
+                                 g.hovered_surface) == g.selected_surfaces.end())
+      append_borders(g.hovered_surface, lines);
     if (!lines.empty() || !g.hovered.empty()) g.hovered.set(lines, {});
   }
 
@@ -178,35 +200,39 @@ void ViewportPainter::draw_panel_gl(const ViewportFrame& f, int panel, const Col
   const ViewCopy* difference_copy =
       f.model->views().difference_scene(f.model->doc().revision(), panel);
   const GpuScene* difference = difference_copy ? &gpu_of(*difference_copy) : nullptr;
+  DisplaySettings shown = display;
   if (difference) {
-    DisplaySettings d = display;
-    d.base = BaseMode::Curvature;
-    d.curvature = CurvatureKind::Mean;  // the field that holds the distance
-    d.curvature_lighting = true;
+    shown.base = BaseMode::Curvature;
+    shown.curvature = CurvatureKind::Mean;  // the field that holds the distance
+    shown.curvature_lighting = true;
     const double m = f.model->views().difference_range();
-    renderer.draw(*difference, camera, d, {-m, m}, v);
+    renderer.draw(*difference, camera, shown, {-m, m}, v);
   } else {
     renderer.draw(gpu, camera, display, range, v);
   }
 
-  update_guides(f, panel);
+  update_guides(f, panel, colours_carry_values(shown));
   const PanelGuides& g = guides_[panel];
-  // Tints use the triangles of what was drawn: the difference copy has the same ones.
-  const GpuScene& drawn = difference ? *difference : gpu;
-  renderer.draw_tint(drawn, g.selected_surfaces, camera, kSelectedTint, v);
-  if (g.hovered_surface >= 0 && std::find(g.selected_surfaces.begin(), g.selected_surfaces.end(),
-                                          g.hovered_surface) == g.selected_surfaces.end()) {
-    const int one[1] = {g.hovered_surface};
-    renderer.draw_tint(drawn, one, camera, kHoverTint, v);
-  }
   if (f.model->work_plane().shown) {
     renderer.draw_guides(g.grid, camera, kGridLine, 1.0f, true, v);
     const PlaneFrame plane = f.model->work_plane().frame(camera);
     renderer.draw_guides(g.axis_u, camera, axis_colour(plane.u), 1.6f, true, v);
     renderer.draw_guides(g.axis_v, camera, axis_colour(plane.v), 1.6f, true, v);
   }
-  renderer.draw_guides(g.selected, camera, kSelectedLine, 3.5f, true, v);
-  renderer.draw_guides(g.hovered, camera, kHoverLine, 3.0f, false, v);
+  // Tints use the triangles of what was drawn: the difference copy has the same ones.
+  const GpuScene& drawn = difference ? *difference : gpu;
+  renderer.draw_selection(drawn, g.selected_surfaces, g.selected, camera, shown, kSelected, v);
+  const bool hover_selected = std::find(g.selected_surfaces.begin(), g.selected_surfaces.end(),
+                                        g.hovered_surface) != g.selected_surfaces.end();
+  const int one[1] = {g.hovered_surface};
+  renderer.draw_selection(drawn,
+                          g.hovered_surface >= 0 && !hover_selected ? std::span<const int>(one)
+                                                                    : std::span<const int>(),
+                          g.hovered, camera, shown, kHovered, v);
+  // The curve marks (knot ticks, joint labels) are drawn in 2D over the views later: which of
+  // them a surface hides is read from this panel's depth now, while it is bound.
+  const std::vector<Vec3> marks = curve_mark_points(f.model->curve_marks());
+  guides_[panel].marks_seen = points_seen(camera, v, marks);
   if (reduced) {
     const Viewport& w = window_rect;
     glScissor(w.x, w.y, w.width, w.height);
@@ -270,7 +296,8 @@ void ViewportPainter::paint(const ViewportFrame& f, const ColorRange& range) {
                    &f.model->mouse().probe,
                    f.ui_scale,
                    i,
-                   &f.model->curve_marks()};
+                   &f.model->curve_marks(),
+                   &guides_[i].marks_seen};
     draw_curve_marks(o);
     draw_point_overlays(o);
     if (f.model->views().panels() > 1) {

@@ -1,9 +1,11 @@
-// Draws the 3D view: each panel's filling with the renderer, then over it the selection (faces
-// tinted, edges and face borders in the accent colour, depth-tested so hidden parts stay
-// hidden), the object under the cursor (a lighter tint), the work-plane grid, and the ImGui
-// overlays (selected and hovered points, tooltips, panel labels, axis triad). Owns the
-// GPU copies of those highlight lines, re-uploaded only when the selection, the hover or the
-// document changes. Needs a current GL context and an ImGui frame.
+// Draws the 3D view: each panel's filling with the renderer, then over it the work-plane grid,
+// the selection (faces tinted, edges and face borders in the accent colour, depth-tested so
+// hidden parts stay hidden; in the curvature colours outlined only, the colours untouched), the
+// object under the cursor (a lighter tint, or its outline), and the ImGui overlays (selected and
+// hovered points, tooltips, the curves' knot ticks and joints, faint where a surface hides them,
+// panel labels, axis triad). Owns the GPU copies of those highlight lines, re-uploaded only when
+// the selection, the hover or the document changes. Needs a current GL context and an ImGui
+// frame.
 #pragma once
 
 #include <array>
@@ -41,8 +43,12 @@ class ViewportPainter {
     uint64_t selected_key = UINT64_MAX, hovered_key = UINT64_MAX;
     std::vector<int> selected_surfaces;
     int hovered_surface = -1;
+    // Per point of curve_mark_points: 1 where no surface of the panel hides it.
+    std::vector<char> marks_seen;
   };
-  void update_guides(const ViewportFrame& f, int panel);
+  // colour_mode: the panel's colours carry values (colours_carry_values), so the surface under
+  // the cursor is outlined instead of tinted.
+  void update_guides(const ViewportFrame& f, int panel, bool colour_mode);
   // While the scene is evaluated behind it: a panel with a progress bar.
   void draw_progress(const ViewportFrame& f);
   void draw_panel_gl(const ViewportFrame& f, int panel, const ColorRange& range,

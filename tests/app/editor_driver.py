@@ -196,6 +196,13 @@ class Editor:
         self.key("5")
         return self.wait_change(mark, "the orthographic view")
 
+    def panel_item(self, label):
+        """The latest reported centre of a side-panel item (printed when it appears or moves)."""
+        self.wait_line(rf"^panel-item {label} ", label, since=0)
+        rx = re.compile(rf"^panel-item {label} ([0-9.]+) ([0-9.]+) window")
+        last = [m for m in map(rx.match, self.lines()) if m][-1]
+        return float(last.group(1)), float(last.group(2))
+
     def tool(self, key, name):
         """Picks a tool by its key; returns the state once the editor reports it active."""
         self.key(key)

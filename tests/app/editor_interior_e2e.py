@@ -33,14 +33,6 @@ path = os.path.join(work, "pentagon.json")
 PENTAGON = 1
 
 
-def panel_item(label):
-    """The latest reported centre of a side-panel button (printed when it appears or moves)."""
-    ed.wait_line(rf"^panel-item {label} ", label, since=0)
-    rx = re.compile(rf"^panel-item {label} ([0-9.]+) ([0-9.]+) window")
-    last = [m for m in map(rx.match, ed.lines()) if m][-1]
-    return float(last.group(1)), float(last.group(2))
-
-
 def pentagon_points(s):
     return {name: at for (face, name), at in s.free_points.items() if face == PENTAGON}
 
@@ -58,7 +50,7 @@ with ed:
     ed.click(s.faces[PENTAGON])
     ed.wait_line(rf"^selection: face {PENTAGON}$", "the pentagon selected")
     for degree in (4, 5):
-        button = panel_item("Raise degree")
+        button = ed.panel_item("Raise degree")
         before = ed.state().revision
         ed.click(button)
         ed.wait_line(rf"^status face {PENTAGON} degree {degree}$", f"degree {degree}")

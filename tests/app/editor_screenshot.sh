@@ -48,5 +48,56 @@ check plain 640 360 0
 check plain 1000 500 1
 check compare 1200 400 0
 check compare 900 450 1
+# The legends of the picture are the window's: in a curvature mode one (the curvature's); with
+# difference colouring too, two (the base pane's curvature and the others' distance), one under
+# the other at the right edge. Counted as the opaque white panels crossed by a column just inside
+# their right edge.
+check_legends() {  # extra-args expected-panels
+  local extra=$1 expected=$2 out="$work/shot-legends-$2.png"
+  printf 'screenshot_width = 1000\nscreenshot_height = 600\nscreenshot_transparent = 0\n%s\n' \
+    'base = curvature' > "$XDG_CONFIG_HOME/patchlab/preferences.ini"
+  # shellcheck disable=SC2086
+  (cd "$work" && timeout 60 xvfb-run -a -s "-screen 0 1024x768x24" \
+     "$patchlab" "$src/assets/default.json" --size 800x600 --screenshot "$out" $extra) \
+    >/dev/null 2>&1 || true
+  python3 - "$out" "$expected" <<'PY'
+import struct, sys, zlib
+path, expected = sys.argv[1], int(sys.argv[2])
+data = open(path, "rb").read()
+pos, idat = 8, b""
+while pos < len(data):
+    n, kind = struct.unpack(">I4s", data[pos:pos + 8])
+    if kind == b"IHDR": width, height, _, colour = struct.unpack(">IIBB", data[pos + 8:pos + 18])
+    if kind == b"IDAT": idat += data[pos + 8:pos + 8 + n]
+    pos += 12 + n
+bpp = {2: 3, 6: 4}[colour]
+raw, stride, rows, prev = zlib.decompress(idat), width * bpp, [], bytearray(width * bpp)
+for y in range(height):  # undo the PNG row filters
+    f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+    for i in range(stride):
+        a = line[i - bpp] if i >= bpp else 0
+        b, c = prev[i], prev[i - bpp] if i >= bpp else 0
+        if f == 1: line[i] = (line[i] + a) & 255
+        elif f == 2: line[i] = (line[i] + b) & 255
+        elif f == 3: line[i] = (line[i] + (a + b) // 2) & 255
+        elif f == 4:
+            p = a + b - c
+            pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+            line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+    rows.append(line)
+    prev = line
+scale = max(1.0, min(width * 0.75, height) / 400.0)  # render/legend.cpp's legend_scale
+x = width - round(8 * scale) - round(4 * scale) - 2  # inside the panels' right padding
+panels, run = 0, 0
+for y in range(height):
+    white = tuple(rows[y][x * bpp:x * bpp + 3]) == (255, 255, 255)
+    run = run + 1 if white else 0
+    if run == 10: panels += 1
+assert panels == expected, f"{path}: {panels} legend panel(s) at the right edge, expected {expected}"
+print(f"{path.split('/')[-1]}: {panels} legend panel(s)")
+PY
+}
+check_legends "" 1
+check_legends --difference 2
 # Nothing was written to the working directory of the run.
 [ -z "$(ls -A "$work" | grep -v -e '^config$' -e '^state$' -e '^shot-')" ]

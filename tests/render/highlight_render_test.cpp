@@ -13,20 +13,13 @@ namespace {
 
 constexpr int kSize = 240;
 
-std::vector<Vec3> square(double lo, double hi, double z) {
-  std::vector<Vec3> p;
-  for (int i = 0; i < 2; ++i)
-    for (int j = 0; j < 2; ++j) p.emplace_back(lo + (hi - lo) * i, lo + (hi - lo) * j, z);
-  return p;
-}
-
 struct TopView {
   // A floor at z = 0 over [-1.5, 1.5]^2 (surface 0) and, above part of it, a raised square at
   // z = 0.5 over [0, 1]^2 (surface 1).
   DrawScene scene = [] {
     DrawScene d;
-    d.surfaces.push_back(test::bezier_mesh(1, 1, square(-1.5, 1.5, 0), 4, "floor"));
-    d.surfaces.push_back(test::bezier_mesh(1, 1, square(0, 1, 0.5), 4, "raised"));
+    d.surfaces.push_back(test::bezier_mesh(1, 1, test::square_corners(-1.5, 1.5, 0), 4, "floor"));
+    d.surfaces.push_back(test::bezier_mesh(1, 1, test::square_corners(0, 1, 0.5), 4, "raised"));
     return d;
   }();
   Camera camera = preset_camera(ViewPreset::Top, scene.bounds(), 1.0);

@@ -8,7 +8,6 @@
 #include <memory>
 #include <string>
 
-#include "render/draw_scene_builder.hpp"
 #include "app/cli/load_input.hpp"
 #include "core/domain/tessellation_cache.hpp"
 #include "core/eval/patch_evaluator.hpp"
@@ -16,6 +15,7 @@
 #include "core/patch/bezier_patch.hpp"
 #include "render/default_view.hpp"
 #include "render/draw_scene.hpp"
+#include "render/draw_scene_builder.hpp"
 #include "render/egl_context.hpp"
 #include "render/frame.hpp"
 #include "render/gpu_scene.hpp"
@@ -50,6 +50,14 @@ inline SurfaceMesh bezier_mesh(int m, int n, std::vector<Vec3> points, int densi
   static TessellationCache cache;
   PatchEvaluator ev(patch, cache.get(patch->domain(), density));
   return make_surface_mesh(ev, name);
+}
+
+// The corners of the square [lo, hi]^2 at height z, as a bilinear patch's control points.
+inline std::vector<Vec3> square_corners(double lo, double hi, double z) {
+  std::vector<Vec3> p;
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) p.emplace_back(lo + (hi - lo) * i, lo + (hi - lo) * j, z);
+  return p;
 }
 
 // The square [-half, half]^2 at height z, as a bilinear patch's mesh.
