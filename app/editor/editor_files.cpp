@@ -40,8 +40,8 @@ void Editor::ask_save_as() {
 }
 
 void Editor::ask_export() {
-  dialogs_.browse(FileDialogs::Purpose::Export, model_.browse_start_dir(),
-                  model_.doc().path().stem().string() + ".obj");
+  dialogs_.browse_export(model_.browse_start_dir(), model_.doc().path().stem().string(),
+                         model_.export_format());
 }
 
 void Editor::ask_screenshot() {
@@ -95,7 +95,8 @@ void Editor::take_screenshot(const fs::path& path) {
       r.legend_title = "distance to " + scheme_short_title(setup.base);
       r.legend_range = {-m, m};
     }
-    if (r.legend_title.empty() && prefs.display.base == BaseMode::Curvature) {
+    if (r.legend_title.empty() && prefs.display.base == BaseMode::Curvature &&
+        model_.shows_surfaces()) {
       r.legend_title = std::string(curvature_name(prefs.display.curvature)) + " curvature";
       r.legend_range = range;
     }
