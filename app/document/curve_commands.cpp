@@ -1,5 +1,6 @@
 #include "app/document/curve_commands.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -60,6 +61,26 @@ void AddCurveCommand::apply(Scene& scene) {
 
 std::string AddCurveCommand::label() const {
   return "add " + std::string(curve_type_name(type_)) + " curve";
+}
+
+DeleteCurvesCommand::DeleteCurvesCommand(std::vector<int> curves) : curves_(std::move(curves)) {
+  std::sort(curves_.begin(), curves_.end());
+  curves_.erase(std::unique(curves_.begin(), curves_.end()), curves_.end());
+}
+
+void DeleteCurvesCommand::apply(Scene& scene) {
+  if (curves_.empty()) throw EditRefused("no curve to delete");
+  for (int c : curves_) curve_at(scene, c);  // each must exist
+  // From the last: the indices still to delete keep their curves.
+  for (auto c = curves_.rbegin(); c != curves_.rend(); ++c)
+    scene.curves.erase(scene.curves.begin() + *c);
+}
+
+std::string DeleteCurvesCommand::label() const {
+  std::string s = curves_.size() == 1 ? "delete curve " : "delete curves ";
+  for (std::size_t i = 0; i < curves_.size(); ++i)
+    s += (i ? ", " : "") + std::to_string(curves_[i]);
+  return s;
 }
 
 void CurvePointCommand::apply(Scene& scene) {

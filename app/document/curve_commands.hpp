@@ -1,8 +1,8 @@
-// The editing commands of free curves, each one undo step on the document: add a curve, move a
-// control point (a run of moves of the same point within the merge window is one step: a drag
-// or nudges), type a weight, insert a knot, elevate the degree, split, reverse. The geometry is
-// core's (core/curve/scene_curve.hpp); a command refuses (EditRefused, the document unchanged)
-// what would leave a curve the reader rejects.
+// The editing commands of free curves, each one undo step on the document: add a curve, delete
+// curves, move a control point (a run of moves of the same point within the merge window is one
+// step: a drag or nudges), type a weight, insert a knot, elevate the degree, split, reverse. The
+// geometry is core's (core/curve/scene_curve.hpp); a command refuses (EditRefused, the document
+// unchanged) what would leave a curve the reader rejects.
 #pragma once
 
 #include <string>
@@ -28,6 +28,19 @@ class AddCurveCommand final : public Command {
   CurveType type_;
   std::vector<Vec3> points_;
   int curve_ = -1;
+};
+
+// Deletes the free curves `curves` (in any order; a curve named twice is deleted once); the
+// curves after them move down. Refused: a curve that does not exist, or none named.
+class DeleteCurvesCommand final : public Command {
+ public:
+  explicit DeleteCurvesCommand(std::vector<int> curves);
+  void apply(Scene& scene) override;
+  std::string label() const override;  // "delete curve 2", "delete curves 0, 3"
+  const std::vector<int>& removed() const { return curves_; }  // increasing, indices before it
+
+ private:
+  std::vector<int> curves_;
 };
 
 // An edit of control point `point` of curve `curve`: refused where the curve has no such point,

@@ -13,14 +13,19 @@ void menu_item(const ActionRegistry& actions, const Action& a, const MenuItemPro
   const bool checked = a.checked && a.checked();
   const std::string detail = a.detail ? a.detail() : std::string();
   const std::string label = detail.empty() ? a.label : a.label + " " + detail;
+  const bool enabled = actions.is_enabled(a);
   if (ImGui::MenuItem(label.c_str(), shortcut.empty() ? nullptr : shortcut.c_str(), checked,
-                      actions.is_enabled(a)))
+                      enabled))
     a.run(std::nullopt);
   if (probe) {
     const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
     probe(a.label, lo.x, lo.y, hi.x, hi.y);
   }
-  if (!a.help.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", a.help.c_str());
+  // A greyed item says why it does not apply now.
+  if (!enabled && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("%s", actions.disabled_reason(a).c_str());
+  else if (!a.help.empty() && ImGui::IsItemHovered())
+    ImGui::SetTooltip("%s", a.help.c_str());
 }
 
 void menu_entries(const ActionRegistry& actions, const std::string& menu) {

@@ -164,12 +164,7 @@ void Editor::draw_interface(const ColorRange& range) {
   }
   draw_status_bar(m.status(), figures, ui_scale_);
 
-  if (views.ready())
-    draw_legend_column(
-        l.legend_column(),
-        view_legends(m.prefs().display, views.compare(), views.difference, range,
-                     views.difference_range(), scheme_short_title(views.setup().base)),
-        ui_scale_);
+  if (views.ready()) draw_legend_column(l.legend_column(), m.legends(range), ui_scale_);
   if (views.ready() && views.panels() > 1)
     draw_figures_table(
         l.table_strip(), m.figures(),

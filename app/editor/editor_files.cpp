@@ -40,8 +40,8 @@ void Editor::ask_save_as() {
 }
 
 void Editor::ask_export() {
-  dialogs_.browse(FileDialogs::Purpose::Export, model_.browse_start_dir(),
-                  model_.doc().path().stem().string() + ".obj");
+  dialogs_.browse_export(model_.browse_start_dir(), model_.doc().path().stem().string(),
+                         model_.export_format());
 }
 
 void Editor::ask_screenshot() {
@@ -96,8 +96,7 @@ void Editor::take_screenshot(const fs::path& path) {
     // The legends the window shows beside the view (editor.cpp's legend column): with
     // difference colouring in a curvature mode, the base pane's curvature legend and the
     // distance legend of the others.
-    r.legends = view_legends(prefs.display, views.compare(), views.difference, range,
-                             views.difference_range(), scheme_short_title(setup.base));
+    r.legends = model_.legends(range);  // none without a surface to colour
     // The window's view, refitted only in aspect: same direction, target and zoom.
     r.camera = model_.nav().camera();
     const Image image = render_screenshot(renderer_, r);

@@ -32,6 +32,18 @@ void FileDialogs::browse(Purpose purpose, const std::filesystem::path& dir,
   }
 }
 
+void FileDialogs::browse_export(const std::filesystem::path& dir, const std::string& stem,
+                                const ExportFormat* format) {
+  purpose_ = Purpose::Export;
+  std::vector<std::string> extensions;
+  for (const ExportFormat& f : export_formats())
+    if (!format || &f == format)
+      extensions.insert(extensions.end(), f.extensions.begin(), f.extensions.end());
+  const std::string ext = format ? format->extensions.front() : ".obj";
+  browser_.open(format ? "Export " + format->label : "Export", "Export", dir, extensions, ext,
+                stem + ext);
+}
+
 void FileDialogs::browse_save_as() {
   auto [dir, name] = handlers_.save_as_start();
   browse(Purpose::SaveAs, dir, name);

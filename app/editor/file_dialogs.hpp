@@ -13,6 +13,7 @@
 
 #include "app/editor/file_browser.hpp"
 #include "app/editor/logic/editor_shell.hpp"
+#include "app/editor/logic/export_formats.hpp"
 #include "app/editor/logic/preferences.hpp"
 
 namespace pl {
@@ -37,6 +38,10 @@ class FileDialogs {
   // Opens the browser for `purpose` in `dir`, with `name` typed in.
   void browse(Purpose purpose, const std::filesystem::path& dir, const std::string& name = "");
   void browse_save_as();  // at save_as_start()
+  // The export browser for `format` (File > Export As: its extensions listed and given to a
+  // name typed without one), or for every export format (null: File > Export...).
+  void browse_export(const std::filesystem::path& dir, const std::string& stem,
+                     const ExportFormat* format);
   void show_error(const std::string& title, const std::string& message);
   // A message to read (and copy) in a scrolling box: what an export wrote.
   void show_report(const std::string& title, const std::string& text);

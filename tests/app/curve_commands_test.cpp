@@ -85,5 +85,29 @@ TEST(CurveCommands, OperationsKeepTheCurveAndRefusalsChangeNothing) {
   EXPECT_TRUE(doc.scene().curves.empty());
 }
 
+TEST(CurveCommands, DeleteCurvesRemovesThemInOneStepAndRefusesAMissingOne) {
+  Document doc;
+  for (int k = 0; k < 4; ++k) {
+    std::vector<Vec3> points = six_points();
+    for (Vec3& p : points) p.z += k;  // four curves told apart by their height
+    doc.execute(std::make_unique<AddCurveCommand>(CurveType::BSpline, points));
+  }
+  const std::vector<SceneCurve> before = doc.scene().curves;
+  EXPECT_EQ(doc.execute(std::make_unique<DeleteCurvesCommand>(std::vector<int>{2, 0, 2})),
+            "delete curves 0, 2");
+  ASSERT_EQ(doc.scene().curves.size(), 2u);
+  EXPECT_EQ(doc.scene().curves[0].points, before[1].points);
+  EXPECT_EQ(doc.scene().curves[1].points, before[3].points);
+  ASSERT_TRUE(doc.undo());
+  ASSERT_EQ(doc.scene().curves.size(), 4u);
+  for (int k = 0; k < 4; ++k) EXPECT_EQ(doc.scene().curves[k].points, before[k].points);
+  const uint64_t revision = doc.revision();
+  EXPECT_THROW(doc.execute(std::make_unique<DeleteCurvesCommand>(std::vector<int>{1, 4})),
+               EditRefused);
+  EXPECT_THROW(doc.execute(std::make_unique<DeleteCurvesCommand>(std::vector<int>{})), EditRefused);
+  EXPECT_EQ(doc.revision(), revision);
+  EXPECT_EQ(doc.scene().curves.size(), 4u) << "a refusal deletes nothing";
+}
+
 }  // namespace
 }  // namespace pl::test

@@ -119,5 +119,32 @@ TEST(EditorActions, HelpListsEveryKeyThenTheMouseThenTheMenuOnlyCommands) {
   EXPECT_EQ(rows[3].what, "Mesh > file.export");
 }
 
+TEST(EditorActions, AKeyWhoseActionDoesNotApplySaysWhy) {
+  ActionRegistry r;
+  int runs = 0;
+  Action del = make_action("edit.delete", "Edit", "Delete", {"Del"}, "", [&] { ++runs; });
+  bool selected = false;
+  del.enabled = [&] { return selected; };
+  del.why_disabled = [] { return std::string("nothing selected"); };
+  r.add(std::move(del));
+  Action other = make_action("view.other", "View", "Other", {"D"}, "", [&] { ++runs; });
+  other.enabled = [] { return false; };
+  r.add(std::move(other));
+
+  std::vector<std::string> said;
+  const auto say = [&](const std::string& m) { said.push_back(m); };
+  EXPECT_FALSE(r.trigger(*parse_chord("Del"), say));
+  EXPECT_FALSE(r.trigger(*parse_chord("D"), say));
+  EXPECT_FALSE(r.trigger(*parse_chord("Ctrl+D"), say)) << "bound to nothing: nothing said";
+  EXPECT_EQ(said,
+            (std::vector<std::string>{"Delete: nothing selected", "Other: not available now"}));
+  EXPECT_EQ(r.disabled_reason(*r.find("edit.delete")), "nothing selected");
+  EXPECT_EQ(runs, 0);
+  selected = true;
+  EXPECT_TRUE(r.trigger(*parse_chord("Del"), say));
+  EXPECT_EQ(runs, 1);
+  EXPECT_EQ(said.size(), 2u) << "an action that runs says nothing here";
+}
+
 }  // namespace
 }  // namespace pl

@@ -111,8 +111,34 @@ TEST_F(AuthoringTools, AddVertexClicksLandOnTheWorkPlaneAndSelectTheNewVertex) {
   EXPECT_EQ(undo_steps(), 3);
 }
 
+TEST_F(AuthoringTools, AddVertexOnAVertexTakesItShiftAddsItToTheChain) {
+  AddVertexTool tool;
+  add_five(tool);
+  ASSERT_EQ(net().vertices.size(), 5u);
+  const std::vector<Vec3> before = net().vertices;
+  const int steps = undo_steps();
+  // The hover over vertex 2 marks the vertex itself, not the plane point beside it.
+  const Vec2 beside = pixel_of(before[2]) + Vec2(3, -2);
+  tool.hover(ctx, at(beside, vertex(2)));
+  EXPECT_EQ(tool.preview(ctx).target, before[2]);
+  // Shift: added to the selection (a chain of vertices for a face), no vertex made.
+  tool.click(ctx, at(beside, vertex(2), true));
+  EXPECT_EQ(net().vertices, before);
+  EXPECT_EQ(selection.items(),
+            (std::vector<SelectionItem>{SelectionItem::of_point(PointRef::vertex(4)),
+                                        SelectionItem::of_point(PointRef::vertex(2))}));
+  EXPECT_EQ(said.back(), "vertex 2 is already here: added it to the selection, no new vertex");
+  // Without Shift: it becomes the selection.
+  tool.click(ctx, at(beside, vertex(0)));
+  EXPECT_EQ(selection.items(),
+            std::vector<SelectionItem>{SelectionItem::of_point(PointRef::vertex(0))});
+  EXPECT_EQ(said.back(), "vertex 0 is already here: selected it, no new vertex");
+  EXPECT_EQ(undo_steps(), steps) << "no undo step";
+}
+
 TEST_F(AuthoringTools, AddVertexOnASurfaceTakesTheSurfacePoint) {
-  doc = Document(load_scene_file(std::filesystem::path(PATCHLAB_SOURCE_DIR) / "assets/default.json"));
+  doc =
+      Document(load_scene_file(std::filesystem::path(PATCHLAB_SOURCE_DIR) / "assets/default.json"));
   LiveSurfaces live(doc.scene(), 16, std::nullopt, "default");
   camera = preset_camera(ViewPreset::Iso, live.draw().bounds(), kRect.aspect());
   ScenePicker picker;
@@ -267,7 +293,8 @@ TEST_F(AuthoringTools, ANormalSeenEndOnLeavesItsVertexToThePointUnderTheCursor) 
 
 struct AuthoringOnDefault : AuthoringTools {
   AuthoringOnDefault() {
-    doc = Document(load_scene_file(std::filesystem::path(PATCHLAB_SOURCE_DIR) / "assets/default.json"));
+    doc = Document(
+        load_scene_file(std::filesystem::path(PATCHLAB_SOURCE_DIR) / "assets/default.json"));
     selection.adopt(doc.scene());
   }
 };

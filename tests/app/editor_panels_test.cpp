@@ -137,28 +137,31 @@ TEST(EditorLayout, LegendsForEachColouredView) {
   DisplaySettings d;
   const ColorRange k{-2, 3};
   d.base = BaseMode::Shaded;
-  EXPECT_TRUE(view_legends(d, false, false, k, 1).empty());
-  EXPECT_TRUE(view_legends(d, true, false, k, 1).empty());
-  EXPECT_TRUE(view_legends(d, false, true, k, 1).empty());  // D without the comparison
-  auto shaded_difference = view_legends(d, true, true, k, 0.5);
+  EXPECT_TRUE(view_legends(d, false, false, true, k, 1).empty());
+  EXPECT_TRUE(view_legends(d, true, false, true, k, 1).empty());
+  EXPECT_TRUE(view_legends(d, false, true, true, k, 1).empty());  // D without the comparison
+  auto shaded_difference = view_legends(d, true, true, true, k, 0.5);
   ASSERT_EQ(shaded_difference.size(), 1u);
   EXPECT_EQ(shaded_difference[0].title, "distance to Gregory");
   EXPECT_EQ(shaded_difference[0].range.lo, -0.5);
   EXPECT_EQ(shaded_difference[0].range.hi, 0.5);
   d.base = BaseMode::Curvature;
   d.curvature = CurvatureKind::Mean;
-  auto curvature = view_legends(d, true, false, k, 0.5);
+  auto curvature = view_legends(d, true, false, true, k, 0.5);
   ASSERT_EQ(curvature.size(), 1u);  // one range for both panels
   EXPECT_EQ(curvature[0].title, "mean curvature");
   // With distances in the other panes the base pane keeps a legend of its own.
-  auto both = view_legends(d, true, true, k, 0.5);
+  auto both = view_legends(d, true, true, true, k, 0.5);
   ASSERT_EQ(both.size(), 2u);
   EXPECT_EQ(both[0].title, "Gregory: mean curvature");
   EXPECT_EQ(both[0].range.hi, 3);
   EXPECT_EQ(both[1].title, "distance to Gregory");
-  auto gb_base = view_legends(d, true, true, k, 0.5, "Generalized Bezier");
+  auto gb_base = view_legends(d, true, true, true, k, 0.5, "Generalized Bezier");
   EXPECT_EQ(gb_base[0].title, "Generalized Bezier: mean curvature");
   EXPECT_EQ(gb_base[1].title, "distance to Generalized Bezier");
+  // No surface shown (an empty scene, free curves only): nothing is coloured, no legend.
+  EXPECT_TRUE(view_legends(d, false, false, false, k, 0.5).empty());
+  EXPECT_TRUE(view_legends(d, true, true, false, k, 0.5).empty());
 }
 
 TEST(EditorLayout, ComparisonTitlesFitTheirPanel) {

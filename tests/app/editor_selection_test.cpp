@@ -64,6 +64,20 @@ TEST(EditorSelection, PruneDropsWhatTheSceneNoLongerHas) {
                                                    SelectionItem::of_point(PointRef::vertex(6))}));
 }
 
+TEST(EditorSelection, DeletedCurvesAreDroppedAndTheLaterOnesRenumbered) {
+  Selection s;
+  s.set({SelectionItem::curve(0), SelectionItem::of_point(PointRef::curve_point(1, 4)),
+         SelectionItem::curve(3), SelectionItem::of_point(PointRef::curve_point(4, 0)),
+         SelectionItem::face(1), SelectionItem::of_point(PointRef::vertex(3))});
+  const uint64_t serial = s.serial();
+  s.remap_curves({1, 2});  // curves 1 and 2 deleted: 3 and 4 become 1 and 2
+  EXPECT_EQ(s.items(), (std::vector<SelectionItem>{
+                           SelectionItem::curve(0), SelectionItem::curve(1),
+                           SelectionItem::of_point(PointRef::curve_point(2, 0)),
+                           SelectionItem::face(1), SelectionItem::of_point(PointRef::vertex(3))}));
+  EXPECT_GT(s.serial(), serial);
+}
+
 TEST(EditorSelection, NamesRoundTrip) {
   for (const SelectionItem& i :
        {SelectionItem::face(4), SelectionItem::edge(0), SelectionItem::patch(2),

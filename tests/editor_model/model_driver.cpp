@@ -167,6 +167,10 @@ Vec2 ModelDriver::face(int f) {
   return printed(pick_pixel(SelectionItem::face(f)), "a face");
 }
 
+Vec2 ModelDriver::curve(int c) {
+  return printed(pick_pixel(SelectionItem::curve(c)), "a free curve");
+}
+
 Vec2 ModelDriver::knob(int v) {
   EditorModel& m = *model_;
   for (const PlaneHandle& h : plane_handles(m.doc().scene(), m.selection(), m.nav().camera(),

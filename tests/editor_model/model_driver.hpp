@@ -76,6 +76,7 @@ class ModelDriver {
   Vec2 vertex(int v);
   Vec2 edge(int e);
   Vec2 face(int f);
+  Vec2 curve(int c);                   // on free curve c's line, away from its points
   Vec2 knob(int v);                    // the normal knob of selected vertex v
   Vec2 world_to_pixel(const Vec3& p);  // affine, from the printed axes (orthographic views)
 

@@ -128,9 +128,19 @@ const Action* ActionRegistry::bound_to(const KeyChord& chord) const {
   return nullptr;
 }
 
-bool ActionRegistry::trigger(const KeyChord& chord) const {
+std::string ActionRegistry::disabled_reason(const Action& a) const {
+  std::string why = a.why_disabled ? a.why_disabled() : std::string();
+  return why.empty() ? "not available now" : why;
+}
+
+bool ActionRegistry::trigger(const KeyChord& chord,
+                             const std::function<void(const std::string&)>& refused) const {
   const Action* a = bound_to(chord);
-  if (!a || !is_enabled(*a)) return false;
+  if (!a) return false;
+  if (!is_enabled(*a)) {
+    if (refused) refused(a->label + ": " + disabled_reason(*a));
+    return false;
+  }
   a->run(chord);
   return true;
 }

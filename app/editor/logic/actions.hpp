@@ -111,6 +111,9 @@ struct Action {
   bool separator_before = false;
   ContextSet context = 0;         // where the right-click menu offers it
   std::function<bool()> enabled;  // null: always
+  // Why it is not enabled now, for the status bar (its key pressed) and the greyed menu item's
+  // tooltip ("nothing selected to delete"); null or "": a general line (disabled_reason).
+  std::function<std::string()> why_disabled;
   std::function<bool()> checked;  // null: not a toggle
   // Runs the action; `chord` is the key that triggered it (nullopt from a menu).
   std::function<void(const std::optional<KeyChord>& chord)> run;
@@ -130,12 +133,16 @@ class ActionRegistry {
   const std::vector<Action>& all() const { return actions_; }
 
   bool is_enabled(const Action& a) const { return !a.enabled || a.enabled(); }
+  // Why `a` is not enabled now: its why_disabled, else that it does not apply now.
+  std::string disabled_reason(const Action& a) const;
   // Runs `id` if it exists and is enabled; returns whether it ran.
   bool run(const std::string& id) const;
   // The action bound to `chord`, enabled or not; null if none.
   const Action* bound_to(const KeyChord& chord) const;
-  // Runs the enabled action bound to `chord`; returns whether one ran.
-  bool trigger(const KeyChord& chord) const;
+  // Runs the enabled action bound to `chord`; returns whether one ran. When the action bound to
+  // it is not enabled, `refused` (if given) gets "<label>: <disabled_reason>".
+  bool trigger(const KeyChord& chord,
+               const std::function<void(const std::string&)>& refused = {}) const;
 
   // Top-level menus in the order their first action was added.
   std::vector<std::string> menus() const;

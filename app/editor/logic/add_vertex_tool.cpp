@@ -6,7 +6,7 @@ namespace pl {
 
 std::string AddVertexTool::hint() const {
   return "click on the work plane or on a surface: a new vertex there (Shift keeps the "
-         "selection); or type its coordinates below";
+         "selection; on a vertex: that vertex is selected); or type its coordinates below";
 }
 
 int AddVertexTool::add_at(ToolContext& ctx, const Vec3& p, bool add_to_selection) {
@@ -26,12 +26,35 @@ int AddVertexTool::add_at(ToolContext& ctx, const Vec3& p, bool add_to_selection
 }
 
 void AddVertexTool::click(ToolContext& ctx, const PointerEvent& e) {
+  // A click on a vertex takes that vertex (the hover names it) instead of a near-duplicate a
+  // hair beside it: selected, or with Shift added to the selection, as a new vertex would be, so
+  // a chain being collected for a face can go through it.
+  if (const int v = vertex_under(e); v >= 0) {
+    const SelectionItem item = SelectionItem::of_point(PointRef::vertex(v));
+    if (e.shift)
+      ctx.selection.add(item);
+    else
+      ctx.selection.set({item});
+    ctx.say("vertex " + std::to_string(v) + " is already here: " +
+            (e.shift ? "added it to the selection" : "selected it") + ", no new vertex");
+    return;
+  }
   const auto p = placement(ctx, e);
   if (!p) {
     ctx.say("the cursor does not meet the work plane here: turn the view or choose another plane");
     return;
   }
   add_at(ctx, *p, e.shift);
+}
+
+void AddVertexTool::hover(ToolContext& ctx, const PointerEvent& e) {
+  // Over a vertex the mark sits on it: a click takes it, it adds nothing beside it.
+  const int v = vertex_under(e);
+  const Scene& scene = ctx.doc.scene();
+  if (v >= 0 && scene.network && v < int(scene.network->vertices.size()))
+    cursor_ = scene.network->vertices[v];
+  else
+    cursor_ = placement(ctx, e);
 }
 
 ToolPreview AddVertexTool::preview(const ToolContext&) const {

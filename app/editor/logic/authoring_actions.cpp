@@ -1,5 +1,6 @@
 #include "app/editor/logic/authoring_actions.hpp"
 
+#include "app/document/curve_commands.hpp"
 #include "app/document/network_commands.hpp"
 #include "app/editor/logic/command_sequence.hpp"
 #include "app/editor/logic/plane_handles.hpp"
@@ -20,7 +21,28 @@ bool has_fixed_normal(const Network& n, int v) {
   return !n.normals.empty() && n.normals[v].has_value();
 }
 
+// Why Delete has nothing to act on in `selection` (which holds no vertex, edge, face or curve).
+std::string why_nothing_to_delete(const Scene& scene, const Selection& selection) {
+  if (selection.empty())
+    return "nothing selected (select vertices, edges, faces or free curves to delete)";
+  bool curve_point = false;
+  for (const PointRef& p : selection.points())
+    curve_point |= p.kind == PointRef::Kind::CurvePoint && point_exists(scene, p);
+  if (curve_point)
+    return "a free curve's control points are not deleted one by one: click the curve's line "
+           "to select the curve, then Delete removes it";
+  return "Delete removes network vertices, edges, faces and free curves; the selection (" +
+         describe(selection, 3) + ") holds none";
+}
+
 }  // namespace
+
+std::vector<int> selected_curves(const Scene& scene, const Selection& selection) {
+  std::vector<int> r;
+  for (const SelectionItem& i : selection.items())
+    if (i.kind == Kind::Curve && item_exists(scene, i)) r.push_back(i.index);
+  return r;
+}
 
 SelectedElements selected_elements(const Scene& scene, const Selection& selection) {
   SelectedElements s;
@@ -42,18 +64,48 @@ void add_authoring_actions(ActionRegistry& actions, Document& doc, Selection& se
 
   Action del = make_action(
       "edit.delete", "Edit", "Delete", {"Del", "Backspace"},
-      "delete the selected vertices (with their edges and faces), edges (with their faces) and "
-      "faces",
+      "delete the selected vertices (with their edges and faces), edges (with their faces), "
+      "faces and free curves",
       [&doc, &selection, say, elements] {
         const SelectedElements s = elements();
-        auto command = std::make_shared<DeleteCommand>(s.vertices, s.edges, s.faces);
+        const std::vector<int> curves = selected_curves(doc.scene(), selection);
+        // Network elements and curves go in one undo step; the network's renumbering is read
+        // from its command afterwards.
+        std::vector<std::unique_ptr<Command>> steps;
+        const DeleteCommand* network = nullptr;
+        if (!s.empty()) {
+          auto c = std::make_unique<DeleteCommand>(s.vertices, s.edges, s.faces);
+          network = c.get();
+          steps.push_back(std::move(c));
+        }
+        const DeleteCurvesCommand* free_curves = nullptr;
+        if (!curves.empty()) {
+          auto c = std::make_unique<DeleteCurvesCommand>(curves);
+          free_curves = c.get();
+          steps.push_back(std::move(c));
+        }
+        if (steps.empty()) return;
+        // Both kinds in one step: the label names what goes.
+        std::string label;
+        for (const SelectionItem& i : selection.items()) {
+          const bool goes =
+              i.kind == Kind::Curve || i.kind == Kind::Edge || i.kind == Kind::Face ||
+              (i.kind == Kind::Point && i.point.kind == PointRef::Kind::NetworkVertex);
+          if (goes && item_exists(doc.scene(), i))
+            label += (label.empty() ? "delete " : ", ") + describe(i);
+        }
+        const std::shared_ptr<Command> command = as_one_step(label, std::move(steps));
         if (!run_command(doc, say, command)) return;
-        selection.remap(command->removed());
+        if (network) selection.remap(network->removed());
+        if (free_curves) selection.remap_curves(free_curves->removed());
         selection.adopt(doc.scene());
       });
   del.separator_before = true;
-  del.context = kOnElements;
-  del.enabled = [elements] { return !elements().empty(); };
+  del.context = kOnElements | context_bit(ContextTarget::Curve);
+  del.enabled = [&doc, &selection, elements] {
+    return !elements().empty() || !selected_curves(doc.scene(), selection).empty();
+  };
+  del.why_disabled = [&doc, &selection] { return why_nothing_to_delete(doc.scene(), selection); };
   actions.add(std::move(del));
 
   Action edge = make_action(
@@ -67,6 +119,10 @@ void add_authoring_actions(ActionRegistry& actions, Document& doc, Selection& se
       });
   edge.context = context_bit(ContextTarget::Point);
   edge.enabled = [elements] { return elements().vertices.size() == 2; };
+  edge.why_disabled = [elements] {
+    return "select exactly two vertices (" + std::to_string(elements().vertices.size()) +
+           " selected)";
+  };
   actions.add(std::move(edge));
 
   Action face = make_action(
@@ -87,6 +143,9 @@ void add_authoring_actions(ActionRegistry& actions, Document& doc, Selection& se
   face.enabled = [elements] {
     const SelectedElements s = elements();
     return s.vertices.size() >= 3 || (s.vertices.empty() && s.edges.size() >= 3);
+  };
+  face.why_disabled = [] {
+    return std::string("select 3 or more vertices in order, or a closed chain of 3 or more edges");
   };
   actions.add(std::move(face));
 
@@ -118,6 +177,7 @@ void add_authoring_actions(ActionRegistry& actions, Document& doc, Selection& se
     const SelectedElements s = elements();
     return s.edges.size() == 1 && s.vertices.empty() && s.faces.empty();
   };
+  split.why_disabled = [] { return std::string("select exactly one edge and nothing else"); };
   actions.add(std::move(split));
 
   // Tangent planes of the selected vertices: fitted to the edges, or fixed (the normal stored;

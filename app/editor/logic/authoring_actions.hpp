@@ -1,10 +1,10 @@
 // The authoring commands that act on the selection, as actions of the editor's table (menu bar,
-// right-click menu, keys, F1): delete, add an edge between two selected vertices, make a face of
-// the selected chain, fill holes, split the selected edge, and fix or fit the tangent planes of
-// the selected vertices. Each is one Document command (one undo step); a refused request says
-// why in the status bar and changes nothing. After a command the selection names the same
-// objects in the new numbering (what a delete removed is dropped) or the new object.
-// GUI-free and unit-tested through the registry.
+// right-click menu, keys, F1): delete (network elements and free curves), add an edge between two
+// selected vertices, make a face of the selected chain, fill holes, split the selected edge, and
+// fix or fit the tangent planes of the selected vertices. Each is one Document command (one undo
+// step); a refused request says why in the status bar and changes nothing. After a command the
+// selection names the same objects in the new numbering (what a delete removed is dropped) or the
+// new object. GUI-free and unit-tested through the registry.
 #pragma once
 
 #include <functional>
@@ -35,5 +35,7 @@ struct SelectedElements {
   bool empty() const { return vertices.empty() && edges.empty() && faces.empty(); }
 };
 SelectedElements selected_elements(const Scene& scene, const Selection& selection);
+// The free curves selected whole (in selection order, existing ones only).
+std::vector<int> selected_curves(const Scene& scene, const Selection& selection);
 
 }  // namespace pl

@@ -46,9 +46,10 @@ int EditorLayout::panel_at(const Vec2& pixel, int count) const {
 }
 
 std::vector<LegendSpec> view_legends(const DisplaySettings& d, bool compare, bool difference,
-                                     const ColorRange& curvature, double distance_range,
-                                     const std::string& base) {
+                                     bool surfaces, const ColorRange& curvature,
+                                     double distance_range, const std::string& base) {
   std::vector<LegendSpec> r;
+  if (!surfaces) return r;  // a range of nothing: the placeholder's -1 ... 1 would mislead
   const bool distance = compare && difference;
   if (d.base == BaseMode::Curvature) {
     const std::string what = std::string(curvature_name(d.curvature)) + " curvature";

@@ -43,9 +43,10 @@ struct EditorLayout {
 
 // The legends the view needs: the curvature map's (one range for every pane of the comparison,
 // so one legend, said to be the base pane's when the others show distances), and the distance
-// colouring's (every pane but the base's), `base` naming the base scheme.
+// colouring's (every pane but the base's), `base` naming the base scheme. Both colour surfaces:
+// with no surface shown (`surfaces` false: an empty scene, curves only) there is none.
 std::vector<LegendSpec> view_legends(const DisplaySettings& display, bool compare, bool difference,
-                                     const ColorRange& curvature, double distance_range,
-                                     const std::string& base = "Gregory");
+                                     bool surfaces, const ColorRange& curvature,
+                                     double distance_range, const std::string& base = "Gregory");
 
 }  // namespace pl

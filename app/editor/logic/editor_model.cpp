@@ -6,6 +6,7 @@
 
 #include "app/editor/logic/add_edge_tool.hpp"
 #include "app/editor/logic/add_vertex_tool.hpp"
+#include "app/editor/logic/comb_tips.hpp"
 #include "app/editor/logic/compare_layout.hpp"
 #include "app/editor/logic/launch_time.hpp"
 #include "app/editor/logic/make_face_tool.hpp"
@@ -14,6 +15,7 @@
 #include "app/editor/logic/split_edge_tool.hpp"
 #include "core/base/data_error.hpp"
 #include "core/scene/network_edit.hpp"
+#include "render/default_view.hpp"
 
 namespace pl {
 
@@ -46,8 +48,7 @@ EditorLayout EditorModel::layout() const {
   const WindowMetrics& m = metrics_;
   EditorLayout l{m.display, m.frame_height, m.frame_height + 6.0 * m.ui_scale, m.ui_scale};
   // The legends' column takes its width from the view, so no legend covers a panel.
-  l.legends =
-      int(view_legends(prefs_.display, views_.compare(), views_.difference, {-1, 1}, 1).size());
+  l.legends = int(legends({-1, 1}).size());
   // The comparison's figures under its panes: a row per face and scheme, a header and a title.
   if (views_.panels() > 1) {
     const auto& result = figures_.result();
@@ -57,6 +58,38 @@ EditorLayout EditorModel::layout() const {
     l.table_height = (std::max(rows, 1) + 2) * m.line_height + 16 * m.ui_scale;
   }
   return l;
+}
+
+bool EditorModel::shows_surfaces() const {
+  if (!views_.ready()) return false;
+  for (int i = 0; i < views_.panels(); ++i)
+    for (const SurfaceMesh& m : views_.panel(i).shown().draw().surfaces)
+      if (!m.triangles.empty()) return true;
+  return false;
+}
+
+std::vector<LegendSpec> EditorModel::legends(const ColorRange& curvature) const {
+  return view_legends(prefs_.display, views_.compare(), views_.difference, shows_surfaces(),
+                      curvature, views_.difference_range(),
+                      scheme_short_title(views_.setup().base));
+}
+
+std::vector<Vec3> EditorModel::framing_points() const {
+  const std::vector<const DrawScene*> scenes = shown_scenes();
+  std::vector<Vec3> points = pl::framing_points(scenes);
+  std::vector<ViewCombs> combs;
+  for (int i = 0; i < int(scenes.size()); ++i) {
+    const LiveCurves& curves = views_.panel(i).curves();
+    ViewCombs v;
+    for (auto refs : {curves.network_comb_refs(), curves.border_refs(), curves.free_comb_refs()})
+      v.combs.insert(v.combs.end(), refs.begin(), refs.end());
+    const Box box = scenes[i]->bounds();
+    v.diagonal = box.empty() ? 0.0 : glm::length(box.hi - box.lo);
+    combs.push_back(std::move(v));
+  }
+  const std::vector<Vec3> tips = comb_tips(combs, prefs_.display);
+  points.insert(points.end(), tips.begin(), tips.end());
+  return points;
 }
 
 Box EditorModel::scene_box() const {
@@ -94,11 +127,14 @@ void EditorModel::after_document_replaced() {
   for (ScenePicker& p : pickers_) p.reset();
   continuity_.reset();
   nav_.unframe();
+  status_.clear_figures();
   followed_revision_ = UINT64_MAX;
   // The comparison asked for at start applies to the first document; later ones keep the
   // layout the user chose.
   rebuild_views(std::exchange(options_.compare, false) || views_.compare());
   if (std::exchange(options_.difference, false)) views_.difference = true;
+  // A small scene is evaluated within rebuild(): its time is the new document's figure.
+  if (views_.ready()) status_.eval_ms = views_.last_eval_ms();
 }
 
 void EditorModel::rebuild_views(bool compare) {
@@ -117,6 +153,7 @@ void EditorModel::update() {
   if (views_.poll()) {
     // The worker's evaluation is taken: the first frame of the scene follows.
     if (!loaded_ms_) loaded_ms_ = ms_since_launch();
+    status_.eval_ms = views_.last_eval_ms();
     if (!views_.compare_error().empty()) say("cannot compare: " + views_.compare_error());
     nav_.unframe();
     for (ScenePicker& p : pickers_) p.reset();

@@ -31,6 +31,7 @@
 #include "app/editor/logic/draw_budget.hpp"
 #include "app/editor/logic/editor_layout.hpp"
 #include "app/editor/logic/editor_shell.hpp"
+#include "app/editor/logic/export_formats.hpp"
 #include "app/editor/logic/preferences.hpp"
 #include "app/editor/logic/scene_picker.hpp"
 #include "app/editor/logic/scene_views.hpp"
@@ -123,8 +124,13 @@ class EditorModel {
   // cannot (untitled, or a .gbp that no longer holds the scene): Save As is needed.
   bool save_in_place();
   void save_as(const std::filesystem::path& path);
-  // A mesh (.obj .ply .off .stl) at once, or a CAD file (.step .stp .igs .iges) on a worker.
+  // A mesh (.obj .ply .off .stl) at once, or a CAD file (.step .stp .igs .iges) on a worker, in
+  // the format chosen (File > Export As), else the one the extension names (export_target: a
+  // name without an extension gets the chosen format's; a refusal is shown, nothing written).
   void export_file(const std::filesystem::path& path);
+  // The format File > Export As chose for the export dialog's answer; null: File > Export...,
+  // the typed extension decides.
+  const ExportFormat* export_format() const { return export_format_; }
   std::filesystem::path browse_start_dir() const;
   // Where Save As opens, and the name typed in.
   std::pair<std::filesystem::path, std::string> save_as_start() const;
@@ -155,7 +161,14 @@ class EditorModel {
   const WindowMetrics& metrics() const { return metrics_; }
 
   EditorLayout layout() const;
+  // Whether any view shows a surface (the colour maps and their legends need one).
+  bool shows_surfaces() const;
+  // The legends of the view as shown, `curvature` the curvature colour range.
+  std::vector<LegendSpec> legends(const ColorRange& curvature) const;
   Box scene_box() const;
+  // What Frame All keeps in view: every point the views draw (framing_points) and, with combs
+  // shown, the combs' tips as they are drawn (comb_tips).
+  std::vector<Vec3> framing_points() const;
   PickScene pick_scene(int panel, std::vector<SelectionItem>& items) const;
   ScenePicker& picker(int panel) { return pickers_.at(std::size_t(panel)); }
   ToolContext tool_context();
@@ -242,6 +255,7 @@ class EditorModel {
   std::optional<ContextTarget> context_;  // the right-click menu is open on this
   uint64_t context_serial_ = 0;
   std::optional<Clock::time_point> release_time_;  // waiting for the fine surfaces
+  const ExportFormat* export_format_ = nullptr;    // File > Export As's choice
   std::optional<double> loaded_ms_;
 };
 

@@ -51,10 +51,32 @@ void EditorModel::add_file_actions() {
       "file.export", "File", "Export...", {},
       "the fine surfaces as a mesh (OBJ, PLY, OFF, STL), or the patches as CAD surfaces "
       "(STEP .step/.stp, IGES .igs/.iges)",
-      [this] { shell_.ask_export(); });
+      [this] {
+        export_format_ = nullptr;  // the typed extension decides
+        shell_.ask_export();
+      });
   exporting.separator_before = true;
   exporting.enabled = [this] { return views_.ready(); };
+  const auto not_shown = [this] {
+    return std::string(views_.loading() ? "the scene is still being evaluated"
+                                        : "the scene could not be evaluated");
+  };
+  exporting.why_disabled = not_shown;
   r.add(std::move(exporting));
+  // The same with the format chosen first: it decides, and a name typed without an extension
+  // gets the format's.
+  for (const ExportFormat& f : export_formats()) {
+    Action as = make_action("file.export." + f.id, "File/Export As", f.label + "...", {},
+                            f.cad ? "the patches as CAD surfaces, " + f.extensions.front()
+                                  : "the fine surfaces as a mesh, " + f.extensions.front(),
+                            [this, format = &f] {
+                              export_format_ = format;
+                              shell_.ask_export();
+                            });
+    as.enabled = [this] { return views_.ready(); };
+    as.why_disabled = not_shown;
+    r.add(std::move(as));
+  }
   r.add(make_action("file.screenshot", "File", "Screenshot...", {}, "render the view to a PNG",
                     [this] { shell_.ask_screenshot(); }));
   Action quit = make_action("file.quit", "File", "Quit", {"Ctrl+Q"}, "quit", [this] {
@@ -79,6 +101,7 @@ void EditorModel::add_edit_actions() {
   });
   undo.detail = [this] { return session_.doc().undo_label(); };
   undo.enabled = [this] { return session_.doc().can_undo() || session_.doc().dragging(); };
+  undo.why_disabled = [] { return std::string("nothing to undo"); };
   r.add(std::move(undo));
   Action redo =
       make_action("edit.redo", "Edit", "Redo", {"Ctrl+Shift+Z", "Ctrl+Y"}, "redo", [this] {
@@ -89,6 +112,7 @@ void EditorModel::add_edit_actions() {
       });
   redo.detail = [this] { return session_.doc().redo_label(); };
   redo.enabled = [this] { return session_.doc().can_redo(); };
+  redo.why_disabled = [] { return std::string("nothing to redo"); };
   r.add(std::move(redo));
   Action esc = make_action("edit.escape", "Edit", "Cancel / Clear Selection", {"Esc"},
                            "cancel a drag, else back to the Select tool, else clear the selection",
@@ -109,6 +133,7 @@ void EditorModel::add_edit_actions() {
   };
   nudge.keys_text = "Arrows, PgUp/PgDn";
   nudge.enabled = [this] { return !selection_.points().empty(); };
+  nudge.why_disabled = [] { return std::string("select points to nudge"); };
   r.add(std::move(nudge));
 }
 
@@ -159,6 +184,7 @@ void EditorModel::add_object_actions() {
   graph.context = context_bit(ContextTarget::Point) | context_bit(ContextTarget::Curve) |
                   context_bit(ContextTarget::Empty);
   graph.enabled = [this] { return selected_curve(session_.doc().scene(), selection_).has_value(); };
+  graph.why_disabled = [] { return std::string("select a free curve or one of its points"); };
   r.add(std::move(graph));
   Action rename = make_action("edit.rename", "Edit", "Rename...", {"F2"},
                               "name the selected face or edge", [this] { start_rename(); });
@@ -167,14 +193,17 @@ void EditorModel::add_object_actions() {
     return selection_.size() == 1 &&
            (selection_.has(SelectionItem::Kind::Face) || selection_.has(SelectionItem::Kind::Edge));
   };
+  rename.why_disabled = [] { return std::string("select one face or one edge to rename"); };
   r.add(std::move(rename));
 }
 
 void EditorModel::add_view_actions() {
   ActionRegistry& r = actions_;
   auto aspect = [this] { return layout().panels(views_.panels())[0].aspect(); };
-  Action all = make_action("view.frame_all", "View", "Frame All", {"F"}, "frame all",
-                           [this, aspect] { nav_.frame(scene_box(), aspect()); });
+  Action all =
+      make_action("view.frame_all", "View", "Frame All", {"F"},
+                  "frame everything drawn (with the curvature combs when shown), with a margin",
+                  [this, aspect] { nav_.frame_all(framing_points(), aspect()); });
   all.context = context_bit(ContextTarget::Empty);
   r.add(std::move(all));
   Action sel =
@@ -184,6 +213,7 @@ void EditorModel::add_view_actions() {
                     b.empty() ? nav_.frame(scene_box(), aspect()) : nav_.frame_closely(b, aspect());
                   });
   sel.enabled = [this] { return !selection_.empty(); };
+  sel.why_disabled = [] { return std::string("nothing selected"); };
   sel.context = kOnObjects;
   r.add(std::move(sel));
   const std::pair<const char*, ViewPreset> presets[] = {{"Front", ViewPreset::Front},
@@ -213,12 +243,14 @@ void EditorModel::add_view_actions() {
   compare.separator_before = true;
   compare.checked = [this] { return views_.compare(); };
   compare.enabled = [this] { return session_.doc().scene().network.has_value(); };
+  compare.why_disabled = [] { return std::string("the scene has no network to fill by schemes"); };
   r.add(std::move(compare));
   Action difference = make_action("view.difference", "View", "Difference Colouring", {"D"},
                                   "colour every pane by its distance to the base pane (comparison)",
                                   [this] { views_.difference = !views_.difference; });
   difference.checked = [this] { return views_.difference; };
   difference.enabled = [this] { return views_.compare(); };
+  difference.why_disabled = [] { return std::string("only in the comparison (C)"); };
   r.add(std::move(difference));
   Action probe = make_action("view.probe", "View", "Probe Under Cursor", {}, "",
                              [this] { prefs_.show_probe = !prefs_.show_probe; });

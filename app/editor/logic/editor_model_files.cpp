@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <ctime>
 #include <iostream>
+#include <stdexcept>
 
 #include "app/document/network_commands.hpp"
 #include "app/document/scene_commands.hpp"
@@ -88,8 +89,15 @@ void EditorModel::save_as(const fs::path& path) {
   }
 }
 
-void EditorModel::export_file(const fs::path& path) {
-  if (cad_format_for(path)) {
+void EditorModel::export_file(const fs::path& typed) {
+  fs::path path;
+  try {
+    path = export_target(typed, export_format_);
+  } catch (const std::invalid_argument& e) {
+    shell_.show_error("Cannot export", typed.filename().string() + ": " + e.what());
+    return;
+  }
+  if (export_format_of(path)->cad) {
     // The scene as it is now (a copy: editing may go on meanwhile), faces as their own schemes.
     CadExportOptions o;
     o.source = session_.untitled() ? session_.title() : session_.doc().path().string();

@@ -57,7 +57,8 @@ void EditorModel::escape() {
 void EditorModel::key(const KeyChord& chord) {
   follow_session();
   if (chord.key == Key::None) return;
-  actions_.trigger(chord);
+  // A key whose command does not apply now says why, instead of doing nothing unexplained.
+  actions_.trigger(chord, [this](const std::string& why) { say(why); });
   // The next key may act on the selection: drop what an undo removed, or all of it for a new
   // document.
   if (session_.serial() != session_serial_)

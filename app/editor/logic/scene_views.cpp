@@ -24,6 +24,7 @@ void SceneViews::rebuild(const Document& doc, const Preferences& prefs, bool com
   difference_copies_.clear();
   range_.invalidate();
   compare_ = false;
+  last_eval_ms_ = 0;  // the document before's; the worker's is taken in poll()
   if (worker_.valid()) abandoned_.push_back(std::move(worker_));  // its result is dropped
   std::erase_if(abandoned_, [](const std::future<void>& f) {
     return f.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
@@ -47,6 +48,7 @@ void SceneViews::rebuild(const Document& doc, const Preferences& prefs, bool com
     if (job->compare)
       for (FaceScheme s : job->setup.schemes) schemes.push_back(s);
     const std::size_t count = schemes.size();
+    const auto t0 = std::chrono::steady_clock::now();
     try {
       for (std::size_t i = 0; i < count; ++i) {
         request.scheme = schemes[i];
@@ -58,6 +60,9 @@ void SceneViews::rebuild(const Document& doc, const Preferences& prefs, bool com
             });
         std::lock_guard lock(job->mutex);
         job->views.push_back(std::move(v));
+        job->eval_ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                .count();
       }
     } catch (const std::exception& e) {
       std::lock_guard lock(job->mutex);
@@ -86,6 +91,7 @@ bool SceneViews::poll() {
     return true;
   }
   main_ = std::make_unique<EvaluatedView>(std::move(job->views[0]), copies_);
+  last_eval_ms_ = job->eval_ms;
   compare_error_ = job->pane_error;
   if (job->compare && job->views.size() == job->setup.schemes.size() + 1) {
     for (std::size_t i = 1; i < job->views.size(); ++i)

@@ -79,6 +79,8 @@ class SceneViews {
   const EvaluatedView& own(const Document& doc);
   // Every view shown is at its fine density (after a drag: all panes exact).
   bool settled() const;
+  // The time of the last evaluation: the worker's of the document (from rebuild() on, until
+  // taken: 0), then each follow() that changed what is drawn.
   double last_eval_ms() const { return last_eval_ms_; }
 
   // The curvature colour range common to all panels (equal colours mean equal curvature), for
@@ -116,6 +118,7 @@ class SceneViews {
     std::string pane_error;  // the first pane that could not be evaluated, and why
     bool compare = false;
     CompareSetup setup;
+    double eval_ms = 0;  // the worker's evaluation, all views
   };
   std::shared_ptr<Job> job_;
   std::future<void> worker_;

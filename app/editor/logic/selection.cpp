@@ -200,6 +200,26 @@ void Selection::remap(const Removed& removed) {
   }
 }
 
+void Selection::remap_curves(const std::vector<int>& gone) {
+  std::vector<SelectionItem> kept;
+  for (SelectionItem i : items_) {
+    int* index =
+        i.kind == SelectionItem::Kind::Curve ? &i.index
+        : i.kind == SelectionItem::Kind::Point && i.point.kind == PointRef::Kind::CurvePoint
+            ? &i.point.object
+            : nullptr;
+    if (index) {
+      *index = renumbered(*index, gone);
+      if (*index < 0) continue;
+    }
+    kept.push_back(i);
+  }
+  if (kept != items_) {
+    items_ = std::move(kept);
+    changed();
+  }
+}
+
 std::vector<PointRef> Selection::points() const {
   std::vector<PointRef> r;
   for (const SelectionItem& i : items_)

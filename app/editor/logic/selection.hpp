@@ -70,6 +70,9 @@ class Selection {
   // After a deletion (indices as before it): removed vertices, edges and faces and the handles
   // of removed edges are dropped, the others renumbered. Call adopt() with the new scene next.
   void remap(const Removed& removed);
+  // After free curves were deleted (`gone`: their indices before it, increasing): the deleted
+  // curves and their points are dropped, the later curves renumbered.
+  void remap_curves(const std::vector<int>& gone);
 
   std::vector<PointRef> points() const;                      // the selected points, in order
   std::vector<int> of_kind(SelectionItem::Kind kind) const;  // edge, face or patch indices

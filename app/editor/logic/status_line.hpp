@@ -22,7 +22,11 @@ class StatusLine {
   void add_frame(double ms);
   double median_frame_ms() const;
 
-  double eval_ms = 0;    // last re-evaluation after an edit
+  // A document replaced the shown one (New, Open, a drop, a recovery): the figures measured on
+  // the one before say nothing about it; they read 0 until measured again.
+  void clear_figures() { eval_ms = settle_ms = 0; }
+
+  double eval_ms = 0;    // last evaluation: a document's first, or a re-evaluation after an edit
   double settle_ms = 0;  // last release to fine surfaces shown
 
  private:

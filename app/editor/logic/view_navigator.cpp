@@ -9,8 +9,30 @@
 namespace pl {
 
 void ViewNavigator::frame(const Box& box, double aspect) {
-  if (box.empty()) return;
-  camera_.frame(box, aspect);
+  camera_.frame(box.empty() ? empty_scene_box() : box, aspect);
+  mark_framed();
+}
+
+void ViewNavigator::frame_all(std::span<const Vec3> points, double aspect) {
+  if (points.empty()) {
+    frame(Box(), aspect);
+    return;
+  }
+  camera_.frame_points(points, aspect, kFrameMargin);
+  if (!camera_.orthographic) {
+    // frame_points scales the points about the target in depth too: a point beyond the target
+    // would keep less than the margin. The distance at which each point's own projection keeps
+    // it: |x| <= (distance + z) tan_h / margin, likewise for y.
+    const double tan_v = std::tan(0.5 * camera_.fov_y), tan_h = tan_v * aspect;
+    const Vec3 f = camera_.forward(), u = camera_.up(), r = camera_.right();
+    double need = camera_.distance;
+    for (const Vec3& p : points) {
+      const Vec3 q = p - camera_.target;
+      const double x = std::abs(glm::dot(q, r)), y = std::abs(glm::dot(q, u)), z = glm::dot(q, f);
+      need = std::max({need, kFrameMargin * x / tan_h - z, kFrameMargin * y / tan_v - z});
+    }
+    camera_.distance = need;
+  }
   mark_framed();
 }
 
@@ -27,15 +49,15 @@ void ViewNavigator::frame_closely(const Box& box, double aspect) {
 }
 
 void ViewNavigator::preset(ViewPreset p, const Box& scene, double aspect) {
-  if (scene.empty()) return;
-  camera_ = preset_camera(p, scene, aspect, camera_.orthographic);
+  camera_ =
+      preset_camera(p, scene.empty() ? empty_scene_box() : scene, aspect, camera_.orthographic);
   mark_framed();
 }
 
 void ViewNavigator::open_view(std::span<const DrawScene* const> scenes, double aspect) {
   const bool ortho = camera_.orthographic;
   if (framing_points(scenes).empty())
-    camera_ = preset_camera(ViewPreset::Iso, Box{Vec3(-1), Vec3(1)}, aspect, ortho);
+    camera_ = preset_camera(ViewPreset::Iso, empty_scene_box(), aspect, ortho);
   else
     camera_ = default_camera(scenes, aspect);
   camera_.orthographic = ortho;

@@ -24,12 +24,24 @@ class ViewNavigator {
   // Until framed, the editor frames the scene on the next frame it draws (a new document).
   bool framed() const { return framed_; }
   void unframe() { framed_ = false; }
-  // Shows all of `box` from the current direction (F).
+  // What a view frames when nothing is drawn (a new scene): the cube [-1, 1]^3 about the origin,
+  // where the work plane's new points go.
+  static Box empty_scene_box() { return Box{Vec3(-1), Vec3(1)}; }
+  // Frame All's room around the scene: a point farthest out projects at most 1 / kFrameMargin of
+  // the way from the view's centre to its edge (6 % of the view's width and height to spare).
+  static constexpr double kFrameMargin = 1.12;
+
+  // Shows all of `box` from the current direction; an empty box: empty_scene_box().
   void frame(const Box& box, double aspect);
+  // Frame All (F): `points` (everything drawn, the combs' tips too when shown) from the current
+  // direction, every one inside the view with kFrameMargin to spare, in perspective as in
+  // orthographic views. No points: empty_scene_box().
+  void frame_all(std::span<const Vec3> points, double aspect);
   // Shows `box` closely (Shift+F), at least 8 % of the scene radius across, keeping the clipping
   // planes sized for the whole scene.
   void frame_closely(const Box& box, double aspect);
-  // A preset direction framing `scene`; keeps orthographic or perspective.
+  // A preset direction framing `scene` (empty: empty_scene_box(), so a new scene can be seen
+  // from the top before anything is drawn); keeps orthographic or perspective.
   void preset(ViewPreset preset, const Box& scene, double aspect);
   // The view a document opens with: default_camera of the scenes drawn side by side, which
   // faces a single patch's front (a .gbp seen from behind would show its back) and frames what

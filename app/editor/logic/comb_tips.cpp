@@ -1,0 +1,34 @@
+#include "app/editor/logic/comb_tips.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pl {
+
+std::vector<Vec3> comb_tips(std::span<const ViewCombs> views, const DisplaySettings& settings) {
+  std::vector<Vec3> tips;
+  if (!settings.combs) return tips;
+  std::vector<double> own;
+  double common = 0;  // the smallest positive automatic scale: the panes share it
+  for (const ViewCombs& v : views) {
+    own.push_back(automatic_comb_scale_of(v.combs, v.diagonal));
+    if (own.back() > 0) common = common > 0 ? std::min(common, own.back()) : own.back();
+  }
+  for (std::size_t i = 0; i < views.size(); ++i) {
+    const double automatic = views.size() > 1 && common > 0 ? common : own[i];
+    const double scale = settings.comb_length.value_or(automatic) * settings.comb_scale;
+    const double cap = kCombCap * kDefaultCombFraction * views[i].diagonal * settings.comb_scale;
+    if (!(scale > 0)) continue;
+    for (const CurvatureComb* c : views[i].combs)
+      for (std::size_t k = 0; k < c->teeth.size() && k < c->points.size(); ++k) {
+        Vec3 tooth = scale * c->teeth[k];
+        const double length = glm::length(tooth);
+        if (!std::isfinite(length)) continue;
+        if (cap > 0 && length > cap) tooth *= cap / length;
+        tips.push_back(c->points[k] + tooth);
+      }
+  }
+  return tips;
+}
+
+}  // namespace pl
