@@ -80,7 +80,7 @@ void add_curve_actions(ActionRegistry& r, Document& doc, Selection& selection,
       "the selected curves become network edges (cubic spans: exact for a cubic, else fitted "
       "within 1e-4 of their size); ends meeting vertices connect to them",
       [&doc, &selection, hooks] {
-        const std::vector<int> curves = selected_curves(doc.scene(), selection);
+        const std::vector<int> curves = curves_of_selection(doc.scene(), selection);
         if (curves.empty()) return;
         const auto command = std::make_shared<CurvesToEdgesCommand>(curves);
         if (!run_command(doc, hooks.say, command)) return;
@@ -96,7 +96,7 @@ void add_curve_actions(ActionRegistry& r, Document& doc, Selection& selection,
   r.add(std::move(to_edges));
 }
 
-std::vector<int> selected_curves(const Scene& scene, const Selection& selection) {
+std::vector<int> curves_of_selection(const Scene& scene, const Selection& selection) {
   std::vector<int> out;
   for (const SelectionItem& i : selection.items()) {
     int c = -1;

@@ -20,8 +20,9 @@ namespace pl {
 
 // The first selected curve (picked whole or by one of its points), if any.
 std::optional<int> selected_curve(const Scene& scene, const Selection& selection);
-// Every selected curve (whole or by a point), each once, in selection order.
-std::vector<int> selected_curves(const Scene& scene, const Selection& selection);
+// Every curve selected whole or by one of its points, each once, in selection order (what To
+// Network Edges acts on; Delete takes only whole curves: authoring_actions.hpp).
+std::vector<int> curves_of_selection(const Scene& scene, const Selection& selection);
 // The parameter of the curve sample nearest to `at` (in space).
 double nearest_curve_parameter(const SceneCurve& curve, const Vec3& at);
 // The middle of the curve's longest span: where a knot goes when nothing says where.
