@@ -103,7 +103,11 @@ void append_comb_tips(const DrawScene& d, const DisplaySettings& settings, std::
   const double scale =
       settings.comb_length.value_or(automatic_comb_scale_of(combs, diagonal)) * settings.comb_scale;
   const double cap = kCombCap * kDefaultCombFraction * diagonal * settings.comb_scale;
-  if (!(scale > 0)) return;
+  if (scale > 0) append_tooth_tips(combs, scale, cap, out);
+}
+
+void append_tooth_tips(std::span<const CurvatureComb* const> combs, double scale, double cap,
+                       std::vector<Vec3>& out) {
   for (const CurvatureComb* c : combs)
     for (std::size_t i = 0; i < c->teeth.size() && i < c->points.size(); ++i) {
       Vec3 tooth = scale * c->teeth[i];

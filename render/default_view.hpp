@@ -43,6 +43,11 @@ std::vector<Vec3> framing_points(std::span<const DrawScene* const> scenes,
 // The tips of every comb of `scene` where the renderer draws them with `settings`: tooth length
 // per unit curvature comb_length (else the scene's automatic scale) times comb_scale, each tooth
 // cut to kCombCap reference lengths.
+// The tips of the teeth of `combs` drawn `scale` long per unit curvature, each tooth at most `cap`
+// long (cap <= 0: no cap), appended to `out` (non-finite teeth left out): the renderer's sizing,
+// shared with the editor's framing of several panes.
+void append_tooth_tips(std::span<const CurvatureComb* const> combs, double scale, double cap,
+                       std::vector<Vec3>& out);
 void append_comb_tips(const DrawScene& scene, const DisplaySettings& settings,
                       std::vector<Vec3>& out);
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/default_view.hpp"
+
 namespace pl {
 
 std::vector<Vec3> comb_tips(std::span<const ViewCombs> views, const DisplaySettings& settings) {
@@ -18,15 +20,7 @@ std::vector<Vec3> comb_tips(std::span<const ViewCombs> views, const DisplaySetti
     const double automatic = views.size() > 1 && common > 0 ? common : own[i];
     const double scale = settings.comb_length.value_or(automatic) * settings.comb_scale;
     const double cap = kCombCap * kDefaultCombFraction * views[i].diagonal * settings.comb_scale;
-    if (!(scale > 0)) continue;
-    for (const CurvatureComb* c : views[i].combs)
-      for (std::size_t k = 0; k < c->teeth.size() && k < c->points.size(); ++k) {
-        Vec3 tooth = scale * c->teeth[k];
-        const double length = glm::length(tooth);
-        if (!std::isfinite(length)) continue;
-        if (cap > 0 && length > cap) tooth *= cap / length;
-        tips.push_back(c->points[k] + tooth);
-      }
+    if (scale > 0) append_tooth_tips(views[i].combs, scale, cap, tips);
   }
   return tips;
 }
