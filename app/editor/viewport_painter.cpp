@@ -30,8 +30,7 @@ constexpr SelectionStyle kSelected = {{kAccent[0], kAccent[1], kAccent[2], 0.30f
 constexpr SelectionStyle kHovered = {
     {kAccent[0], kAccent[1], kAccent[2], 0.13f}, {1.0f, 1.0f, 1.0f, 0.85f}, 3.0f, false};
 constexpr std::array<float, 4> kGridLine = {0.42f, 0.44f, 0.50f, 0.55f};
-// Grid cells across the view's height, and how far the grid reaches (in cells from its centre).
-constexpr int kGridCellsPerView = 12;
+// How far the grid reaches (in cells from its centre; its step: shown_grid_step).
 constexpr int kGridHalfCells = 24;
 
 // The colour of the world axis `a` points along (x red, y green, z blue, as the axis triad).
@@ -144,7 +143,7 @@ void ViewportPainter::update_guides(const ViewportFrame& f, int panel, bool colo
     // Sized to the view at the camera's target, centred where the target meets the plane.
     const Camera& c = f.model->nav().camera();
     const PlaneFrame plane = f.model->work_plane().frame(c);
-    const double step = grid_step(2 * c.half_height(), kGridCellsPerView);
+    const double step = shown_grid_step(c);
     // Within the clipping planes, which hug the scene (2 scene radii about the target).
     const int half_cells = std::clamp(int(1.8 * c.scene_radius / step), 1, kGridHalfCells);
     g.grid.set(grid_segments(plane, c.target, step, half_cells), {});

@@ -135,6 +135,10 @@ void ModelDriver::click(const Vec2& pixel, int button) {
   release(button);
 }
 
+void ModelDriver::hold(bool shift, bool ctrl, bool alt) {
+  pointer_.shift = shift, pointer_.ctrl = ctrl, pointer_.alt = alt;
+}
+
 ViewRect ModelDriver::view_rect() const {
   return model_->layout().panels(model_->views().panels())[0];
 }

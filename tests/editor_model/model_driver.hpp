@@ -71,6 +71,8 @@ class ModelDriver {
   void drag_to(const Vec2& pixel);
   void release(int button = 0);
   void click(const Vec2& pixel, int button = 0);
+  // The modifier keys held from now on (as the pointer sees them).
+  void hold(bool shift, bool ctrl, bool alt);
 
   // Where the --debug-state lines put things, as the end-to-end driver reads them.
   Vec2 vertex(int v);

@@ -26,10 +26,13 @@ int AddVertexTool::add_at(ToolContext& ctx, const Vec3& p, bool add_to_selection
 }
 
 void AddVertexTool::click(ToolContext& ctx, const PointerEvent& e) {
-  // A click on a vertex takes that vertex (the hover names it) instead of a near-duplicate a
-  // hair beside it: selected, or with Shift added to the selection, as a new vertex would be, so
-  // a chain being collected for a face can go through it.
-  if (const int v = vertex_under(e); v >= 0) {
+  // A click on a vertex takes that vertex (the hover names it, or snapping lands on it) instead
+  // of a near-duplicate a hair beside it: selected, or with Shift added to the selection, as a
+  // new vertex would be, so a chain being collected for a face can go through it.
+  const std::optional<Snapped> snapped = snapping(ctx, e);
+  int v = vertex_under(e);
+  if (v < 0 && snapped) v = snapped->vertex;
+  if (v >= 0) {
     const SelectionItem item = SelectionItem::of_point(PointRef::vertex(v));
     if (e.shift)
       ctx.selection.add(item);
@@ -39,22 +42,29 @@ void AddVertexTool::click(ToolContext& ctx, const PointerEvent& e) {
             (e.shift ? "added it to the selection" : "selected it") + ", no new vertex");
     return;
   }
-  const auto p = placement(ctx, e);
+  const auto p = snapped ? std::optional<Vec3>(snapped->point) : placement(ctx, e);
   if (!p) {
     ctx.say("the cursor does not meet the work plane here: turn the view or choose another plane");
     return;
   }
-  add_at(ctx, *p, e.shift);
+  if (add_at(ctx, *p, e.shift) >= 0 && snapped)
+    ctx.say(ctx.doc.undo_label() + " (snapped to " + snapped->what + ")");
 }
 
 void AddVertexTool::hover(ToolContext& ctx, const PointerEvent& e) {
   // Over a vertex the mark sits on it: a click takes it, it adds nothing beside it.
   const int v = vertex_under(e);
   const Scene& scene = ctx.doc.scene();
-  if (v >= 0 && scene.network && v < int(scene.network->vertices.size()))
+  if (v >= 0 && scene.network && v < int(scene.network->vertices.size())) {
     cursor_ = scene.network->vertices[v];
-  else
-    cursor_ = placement(ctx, e);
+    return;
+  }
+  cursor_ = placement(ctx, e);
+  // What the point would snap to, said once as it changes (not every frame).
+  const std::optional<Snapped> s = snapping(ctx, e);
+  const std::string what = s ? s->what : "";
+  if (what != snapped_to_ && !what.empty() && what != "grid") ctx.say("snap: " + what);
+  snapped_to_ = what;
 }
 
 ToolPreview AddVertexTool::preview(const ToolContext&) const {

@@ -23,6 +23,9 @@ class AddVertexTool final : public ClickTool {
   // Adds a vertex at p and selects it (`add_to_selection`: keeps what was selected). Returns the
   // new vertex, or -1 when refused (a non-finite position).
   int add_at(ToolContext& ctx, const Vec3& p, bool add_to_selection = false);
+
+ private:
+  std::string snapped_to_;  // what the hover snapped to last ("" when nothing)
 };
 
 }  // namespace pl

@@ -266,6 +266,17 @@ void EditorModel::add_work_plane_actions() {
   grid.checked = [this] { return work_plane_.shown; };
   grid.context = context_bit(ContextTarget::Empty);
   r.add(std::move(grid));
+  Action snap = make_action(
+      "plane.snap", "View/Work Plane", "Snap", {"Shift+G"},
+      "new points snap to vertices, curve points, ends, midpoints and curves near the cursor, "
+      "else to the grid (hold Alt to place freely)",
+      [this] {
+        work_plane_.snap = !work_plane_.snap;
+        say(work_plane_.snap ? "snapping on (Alt places freely)" : "snapping off");
+      });
+  snap.checked = [this] { return work_plane_.snap; };
+  snap.context = context_bit(ContextTarget::Empty);
+  r.add(std::move(snap));
   for (WorkPlaneKind k :
        {WorkPlaneKind::View, WorkPlaneKind::XY, WorkPlaneKind::XZ, WorkPlaneKind::YZ}) {
     std::string id = std::string("plane.") + work_plane_name(k);

@@ -34,7 +34,17 @@ bool run_command(ToolContext& ctx, std::shared_ptr<Command> command) {
   return run_command(ctx.doc, ctx.say, std::move(command));
 }
 
+std::optional<Snapped> snapping(const ToolContext& ctx, const PointerEvent& e) {
+  if (!ctx.work_plane.snap || e.alt) return std::nullopt;
+  if (auto s =
+          snap_to_scene(ctx.doc.scene(), ctx.camera, e.rect, e.pixel, kSnapRadiusPx * ctx.ui_scale))
+    return s;
+  if (e.under && e.under->surface) return std::nullopt;  // on a surface: that point
+  return snap_to_grid(ctx.work_plane, ctx.camera, e.rect, e.pixel);
+}
+
 std::optional<Vec3> placement(const ToolContext& ctx, const PointerEvent& e) {
+  if (const auto s = snapping(ctx, e)) return s->point;
   if (e.under && e.under->surface) return e.under->surface->position;
   return ctx.work_plane.hit(ctx.camera, window_ray(ctx.camera, e.rect, e.pixel));
 }

@@ -17,6 +17,7 @@
 #include "app/document/network_commands.hpp"
 #include "app/editor/logic/scene_picker.hpp"
 #include "app/editor/logic/selection.hpp"
+#include "app/editor/logic/snapping.hpp"
 #include "app/editor/logic/work_plane.hpp"
 
 namespace pl {
@@ -115,8 +116,14 @@ class ClickTool : public Tool {
   std::optional<Vec3> cursor_;
 };
 
-// Where a click at `e` puts a new point: on the surface under the cursor, else where the
-// cursor's ray meets the work plane (nullopt when it does not, in front of the eye).
+// How near (in pixels, times the UI scale) a scene point must be for a new point to snap to it.
+inline constexpr double kSnapRadiusPx = 10;
+// With snapping on and Alt not held: the scene point near the cursor a new point snaps to, else
+// (off a surface) the work plane's grid point; nullopt otherwise (snapping.hpp).
+std::optional<Snapped> snapping(const ToolContext& ctx, const PointerEvent& e);
+// Where a click at `e` puts a new point: where it snaps (snapping), else on the surface under
+// the cursor, else where the cursor's ray meets the work plane (nullopt when it does not, in
+// front of the eye).
 std::optional<Vec3> placement(const ToolContext& ctx, const PointerEvent& e);
 // The network vertex under the cursor at `e`, or -1.
 int vertex_under(const PointerEvent& e);

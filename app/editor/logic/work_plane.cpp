@@ -62,6 +62,15 @@ double grid_step(double world_size, int cells) {
   return 10 * decade;
 }
 
+double shown_grid_step(const Camera& camera) {
+  return grid_step(2 * camera.half_height(), kGridCellsPerView);
+}
+
+Vec3 nearest_grid_point(const PlaneFrame& f, const Vec3& p, double step) {
+  const Vec2 c = plane_coordinates(f, p);
+  return f.origin + std::round(c.x / step) * step * f.u + std::round(c.y / step) * step * f.v;
+}
+
 std::vector<Vec3> grid_segments(const PlaneFrame& f, const Vec3& centre, double step,
                                 int half_cells) {
   std::vector<Vec3> s;

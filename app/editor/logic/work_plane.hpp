@@ -26,6 +26,9 @@ struct WorkPlane {
   WorkPlaneKind kind = WorkPlaneKind::XY;
   Vec3 origin{0.0};
   bool shown = false;  // the grid is drawn
+  // New points snap (snapping.hpp): to vertices, curve points, ends and midpoints, onto curves,
+  // and on the plane to the grid shown (Alt held suspends it).
+  bool snap = false;
 
   // The plane for this camera (a view-aligned plane turns with it: normal towards the eye, u
   // right, v up; world planes keep their axes, normals +z, +y flipped to -y for XZ so that u x v
@@ -41,6 +44,13 @@ std::optional<Vec3> intersect_plane_ahead(const Ray& ray, const PlaneFrame& plan
 
 // The nice grid step (1, 2 or 5 times a power of ten) closest above `world_size / cells`.
 double grid_step(double world_size, int cells);
+// About this many grid cells span the view's height.
+inline constexpr int kGridCellsPerView = 12;
+// The step of the grid drawn for this camera (what grid snapping rounds to).
+double shown_grid_step(const Camera& camera);
+// p (on the plane) moved to the nearest grid point: multiples of `step` from the origin along u
+// and v.
+Vec3 nearest_grid_point(const PlaneFrame& frame, const Vec3& p, double step);
 
 // Grid lines of `frame` as segment end points (pairs, one per cell side), `2 * half_cells` cells
 // of `step` across, centred on the grid point nearest to `centre` projected onto the plane
