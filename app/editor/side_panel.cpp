@@ -2,12 +2,32 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+
 #include "app/editor/logic/compare_layout.hpp"
 #include "app/editor/logic/editor_layout.hpp"
 #include "core/analysis/compared_schemes.hpp"
 #include "core/scene/network_edit.hpp"
 
 namespace pl {
+
+namespace {
+
+// The Selection section keeps the tallest height it has had (up to kSelectionMostRows rows), so
+// the sections below move down at most when a taller selection than ever before appears, and
+// never jump back up when it shrinks or goes: what the designer aims at stays put. (A fixed
+// reserve for the tallest selection would leave the Display section off screen at start.)
+constexpr float kSelectionMostRows = 30;
+
+void keep_section_height(float used, float ui_scale) {
+  static float tallest = 0, scale = 0;
+  if (scale != ui_scale) tallest = 0, scale = ui_scale;  // sizes in pixels follow the scale
+  tallest =
+      std::max(tallest, std::min(used, kSelectionMostRows * ImGui::GetFrameHeightWithSpacing()));
+  ImGui::Dummy(ImVec2(0, tallest - used));  // always one item: the same spacing in every case
+}
+
+}  // namespace
 
 bool draw_side_panel(const SidePanel& p, double top, double bottom) {
   const ImGuiIO& io = ImGui::GetIO();
@@ -21,9 +41,19 @@ bool draw_side_panel(const SidePanel& p, double top, double bottom) {
   ImGui::PushItemWidth(-110 * p.ui_scale);
   bool rebuild = false;
   draw_tools_section(p);
-  if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen))
+  if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen)) {
+    // As one group, so that its height is what it drew whatever its last row ends with.
+    ImGui::BeginGroup();
     draw_selection_section(p);
-  if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) {
+    ImGui::EndGroup();
+    keep_section_height(ImGui::GetItemRectSize().y, float(p.ui_scale));
+  }
+  const bool display = ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen);
+  if (p.item_probe) {
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    p.item_probe("Display header", lo.x, lo.y, hi.x, hi.y);
+  }
+  if (display) {
     rebuild = draw_display_section(p);
     // The comparison's panes are a choice of display: which schemes fill the network side by
     // side.

@@ -5,7 +5,10 @@ editor_tooltip_e2e.sh.
 It opens WORKDIR/scene.json (a copy of the default scene) and moves the mouse onto each tool
 button of the lowest row (the nearest to the tool's hint below the buttons). The tooltip the
 editor reports (--debug-state: "panel-item tooltip ... rect X0 Y0 X1 Y1") must lie left of the
-panel (over the view), inside the window, and must not cover the hint's rectangle. Every step waits for what the
+panel (over the view), inside the window, and must not cover the hint's rectangle. Then it selects
+a face and a vertex (each may make the Selection section taller, once), then nothing, the face,
+nothing, the vertex and the face again: the Display section's header must not move (the panel does
+not reflow under the mouse). Every step waits for what the
 editor reports, never for a fixed time.
 
 Usage: editor_tooltip_e2e.py PATCHLAB WORKDIR (WORKDIR holds scene.json, cwd/, config/, state/).
@@ -42,7 +45,8 @@ def overlap(a, b):
 
 ed = Editor(binary, ["--size", "1200x760", os.path.join(work, "scene.json")], work, env)
 with ed:
-    ed.wait_state(lambda s: s.count("faces") == 2, "the scene")
+    s = ed.wait_state(lambda s: s.count("faces") == 2 and s.faces.get(1) is not None
+                      and s.vertices.get(0) is not None, "the scene")
     ed.focus()
     ed.wait_line(r"^panel-item Tool hint ", "the tool's hint", since=0)
     hint = rects(ed, "Tool hint")[-1]
@@ -71,4 +75,30 @@ with ed:
         print(f"{tool}: tooltip {tip}, hint {hint}")
         # Away from the buttons before the next one, so each tooltip is a new one.
         ed.move((100, 400))
+
+    # The sections below Selection move down at most when a taller selection than before appears
+    # (the GB face and the vertex with its Transform rows, once each), and then stay put as
+    # selections come and go.
+    def display_top():
+        return rects(ed, "Display header")[-1][1]
+
+    face = ("the face", lambda: ed.click(s.faces[1]), r"^selection: face 1$")
+    vertex = ("the vertex", lambda: ed.click(s.vertices[0]), r"^selection: vertex 0$")
+    nothing = ("nothing", lambda: ed.shortcut("Escape"), r"^selection: none$")
+    steps = [face, vertex, nothing, face, nothing, vertex, face]
+    before = None
+    for k, (what, act, expect) in enumerate(steps):
+        start = len(ed.lines())
+        seen = len(rects(ed, "Display header"))
+        act()
+        # The frame that changes the selection draws the panel before it reports the selection,
+        # and the header is reported whenever it moves: a move would be in the log by now.
+        ed.wait_line(expect, f"{what} selected", since=start)
+        if k < 2:  # the face and the vertex: each may be the tallest yet
+            before = display_top()
+            continue
+        moved = [r[1] for r in rects(ed, "Display header")[seen:] if r[1] != before]
+        check(not moved, f"with {what} selected the Display section moved from y {before} to "
+                         f"{moved}")
+    print(f"the Display section stayed at y {before} as smaller selections came and went")
     ed.quit()
