@@ -9,9 +9,10 @@
 // where evaluation is the views' share of a drag frame (engine sync and mesh arrays), settle is
 // the time from the release to the first frame showing the fine surfaces in every pane, first frame
 // and loaded are the times from the process's launch to the first frame swapped (the progress bar)
-// and to the moment the worker's evaluated scene is taken (the frame showing it follows), and the peak RSS is the process's high-water mark
-// after all of it: loading and the first evaluation included. Display settings are the
-// defaults (the user's preferences are not read), or those --display MODE names.
+// and to the moment the worker's evaluated scene is taken (the frame showing it follows), and the
+// peak RSS is the process's high-water mark after all of it: loading and the first evaluation
+// included. Display settings are the defaults (the user's preferences are not read), or those
+// --display MODE names.
 #include <sys/resource.h>
 #include <time.h>
 
