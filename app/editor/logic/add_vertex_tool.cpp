@@ -42,7 +42,7 @@ void AddVertexTool::click(ToolContext& ctx, const PointerEvent& e) {
             (e.shift ? "added it to the selection" : "selected it") + ", no new vertex");
     return;
   }
-  const auto p = snapped ? std::optional<Vec3>(snapped->point) : placement(ctx, e);
+  const auto p = placement(ctx, e, snapped);
   if (!p) {
     ctx.say("the cursor does not meet the work plane here: turn the view or choose another plane");
     return;
@@ -59,9 +59,9 @@ void AddVertexTool::hover(ToolContext& ctx, const PointerEvent& e) {
     cursor_ = scene.network->vertices[v];
     return;
   }
-  cursor_ = placement(ctx, e);
   // What the point would snap to, said once as it changes (not every frame).
   const std::optional<Snapped> s = snapping(ctx, e);
+  cursor_ = placement(ctx, e, s);
   const std::string what = s ? s->what : "";
   if (what != snapped_to_ && !what.empty() && what != "grid") ctx.say("snap: " + what);
   snapped_to_ = what;

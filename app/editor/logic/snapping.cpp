@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 namespace pl {
 
@@ -30,13 +31,27 @@ struct Best {
   }
 };
 
-// The point of `curve` (t in [a, b]) nearest the cursor on screen: the best of 64 samples, then a
-// golden-section search on the screen distance around it.
+// Whether the cursor is within `radius` of the screen box of `hull` (points whose convex hull
+// holds the curve: a Bézier's or a spline's control points, weights being positive). A curve out
+// of reach is not searched: a hover then costs a few projections per curve, not a search.
+bool within_reach(std::span<const Vec3> hull, const WindowProjector& project, const Vec2& pixel,
+                  double radius) {
+  Vec2 lo(INFINITY), hi(-INFINITY);
+  for (const Vec3& p : hull) {
+    const auto at = project(p);
+    if (!at) return true;  // partly behind the eye: search it
+    lo = glm::min(lo, *at), hi = glm::max(hi, *at);
+  }
+  return pixel.x >= lo.x - radius && pixel.x <= hi.x + radius && pixel.y >= lo.y - radius &&
+         pixel.y <= hi.y + radius;
+}
+
+// The parameter of `curve` (t in [a, b]) nearest the cursor on screen: the best of 64 samples,
+// then a golden-section search on the screen distance around it (one new distance a step).
 template <class Curve>
-std::optional<std::pair<double, double>> nearest_on_screen(const Curve& point_at, double a,
-                                                           double b, const WindowProjector& project,
-                                                           const Vec2& pixel) {
-  constexpr int kSamples = 64;
+std::optional<double> nearest_on_screen(const Curve& point_at, double a, double b,
+                                        const WindowProjector& project, const Vec2& pixel) {
+  constexpr int kSamples = 64, kSteps = 40;
   const auto distance = [&](double t) {
     const auto at = project(point_at(t));
     return at ? glm::length(*at - pixel) : INFINITY;
@@ -49,15 +64,18 @@ std::optional<std::pair<double, double>> nearest_on_screen(const Curve& point_at
   double lo = a + (b - a) * std::max(0, best - 1) / kSamples;
   double hi = a + (b - a) * std::min(kSamples, best + 1) / kSamples;
   const double g = (std::sqrt(5.0) - 1) / 2;
-  for (int i = 0; i < 40; ++i) {
-    const double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-    if (distance(x1) < distance(x2))
-      hi = x2;
-    else
-      lo = x1;
+  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+  double d1 = distance(x1), d2 = distance(x2);
+  for (int i = 0; i < kSteps; ++i) {
+    if (d1 < d2) {
+      hi = x2, x2 = x1, d2 = d1;
+      x1 = hi - g * (hi - lo), d1 = distance(x1);
+    } else {
+      lo = x1, x1 = x2, d1 = d2;
+      x2 = lo + g * (hi - lo), d2 = distance(x2);
+    }
   }
-  const double t = 0.5 * (lo + hi);
-  return std::pair{t, distance(t)};
+  return 0.5 * (lo + hi);
 }
 
 }  // namespace
@@ -75,24 +93,30 @@ std::optional<Snapped> snap_to_scene(const Scene& scene, const Camera& camera, c
       offer(n.vertices[v], SnapKind::Vertex, "vertex " + std::to_string(v), int(v));
     for (std::size_t e = 0; e < n.edges.size(); ++e) {
       const BezierCurve c = n.edge_curve(int(e));
+      if (!within_reach(c.control_points(), project, pixel, radius)) continue;
       const std::string name = "edge " + std::to_string(e);
       offer(c.point(0.5), SnapKind::Midpoint, name + " midpoint");
-      const auto on =
-          nearest_on_screen([&](double t) { return c.point(t); }, 0.0, 1.0, project, pixel);
-      if (on) offer(c.point(on->first), SnapKind::OnCurve, "on " + name);
+      if (const auto t =
+              nearest_on_screen([&](double u) { return c.point(u); }, 0.0, 1.0, project, pixel))
+        offer(c.point(*t), SnapKind::OnCurve, "on " + name);
     }
   }
   for (std::size_t i = 0; i < scene.curves.size(); ++i) {
     const SceneCurve& c = scene.curves[i];
+    // Every candidate of a curve lies in the hull of its control points (its stored points for
+    // the Bézier and spline types; the interpolating and Hermite cubics' are their spline form's).
+    const bool own_hull = c.type != CurveType::Interpolating && c.type != CurveType::Hermite;
+    if (!within_reach(own_hull ? c.points : spline_form(c).points, project, pixel, radius))
+      continue;
     const std::string name = "curve " + std::to_string(i);
     for (std::size_t k = 0; k < c.points.size(); ++k)
       offer(c.points[k], SnapKind::CurvePoint, name + " point " + std::to_string(k));
     offer(evaluate(c, c.t_min()).p, SnapKind::End, name + " start");
     offer(evaluate(c, c.t_max()).p, SnapKind::End, name + " end");
     offer(evaluate(c, 0.5 * (c.t_min() + c.t_max())).p, SnapKind::Midpoint, name + " midpoint");
-    const auto on = nearest_on_screen([&](double t) { return evaluate(c, t).p; }, c.t_min(),
-                                      c.t_max(), project, pixel);
-    if (on) offer(evaluate(c, on->first).p, SnapKind::OnCurve, "on " + name);
+    if (const auto t = nearest_on_screen([&](double u) { return evaluate(c, u).p; }, c.t_min(),
+                                         c.t_max(), project, pixel))
+      offer(evaluate(c, *t).p, SnapKind::OnCurve, "on " + name);
   }
   return best.snapped;
 }

@@ -44,7 +44,12 @@ std::optional<Snapped> snapping(const ToolContext& ctx, const PointerEvent& e) {
 }
 
 std::optional<Vec3> placement(const ToolContext& ctx, const PointerEvent& e) {
-  if (const auto s = snapping(ctx, e)) return s->point;
+  return placement(ctx, e, snapping(ctx, e));
+}
+
+std::optional<Vec3> placement(const ToolContext& ctx, const PointerEvent& e,
+                              const std::optional<Snapped>& snapped) {
+  if (snapped) return snapped->point;
   if (e.under && e.under->surface) return e.under->surface->position;
   return ctx.work_plane.hit(ctx.camera, window_ray(ctx.camera, e.rect, e.pixel));
 }

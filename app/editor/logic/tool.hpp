@@ -125,6 +125,10 @@ std::optional<Snapped> snapping(const ToolContext& ctx, const PointerEvent& e);
 // the cursor, else where the cursor's ray meets the work plane (nullopt when it does not, in
 // front of the eye).
 std::optional<Vec3> placement(const ToolContext& ctx, const PointerEvent& e);
+// The same with the snap already found (snapping(ctx, e)), so a caller that also reports it
+// searches the scene once.
+std::optional<Vec3> placement(const ToolContext& ctx, const PointerEvent& e,
+                              const std::optional<Snapped>& snapped);
 // The network vertex under the cursor at `e`, or -1.
 int vertex_under(const PointerEvent& e);
 
