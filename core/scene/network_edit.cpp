@@ -1,6 +1,7 @@
 #include "core/scene/network_edit.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <set>
@@ -375,17 +376,21 @@ Vec3 stored_normal(const Vec3& normal) {
   // fixed point, or a short cycle of vectors that normalise into each other. Of a cycle the
   // smallest (lexicographically) is taken, so that the result is the same from every vector of
   // the cycle: the reader (which calls this too) maps a stored normal to itself.
+  constexpr int kMostSteps = 16;
+  std::array<Vec3, kMostSteps + 1> seen;  // on the stack: the reader calls this per normal
+  int count = 0;
   Vec3 n = glm::normalize(normal);
-  std::vector<Vec3> seen{n};
-  for (int i = 0; i < 16; ++i) {
+  seen[count++] = n;
+  for (int i = 0; i < kMostSteps; ++i) {
     const Vec3 again = glm::normalize(n);
     if (again == n) return n;
-    const auto cycle = std::find(seen.begin(), seen.end(), again);
-    if (cycle != seen.end())
-      return *std::min_element(cycle, seen.end(), [](const Vec3& a, const Vec3& b) {
+    const auto end = seen.begin() + count;
+    const auto cycle = std::find(seen.begin(), end, again);
+    if (cycle != end)
+      return *std::min_element(cycle, end, [](const Vec3& a, const Vec3& b) {
         return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
       });
-    seen.push_back(again);
+    seen[count++] = again;
     n = again;
   }
   return n;
