@@ -11,13 +11,8 @@
 namespace pl {
 
 std::optional<int> selected_curve(const Scene& scene, const Selection& selection) {
-  for (const SelectionItem& i : selection.items()) {
-    if (i.kind == SelectionItem::Kind::Curve && item_exists(scene, i)) return i.index;
-    if (i.kind == SelectionItem::Kind::Point && i.point.kind == PointRef::Kind::CurvePoint &&
-        point_exists(scene, i.point))
-      return i.point.object;
-  }
-  return std::nullopt;
+  const std::vector<int> curves = curves_of_selection(scene, selection);
+  return curves.empty() ? std::nullopt : std::optional<int>(curves.front());
 }
 
 double nearest_curve_parameter(const SceneCurve& curve, const Vec3& at) {
